@@ -1,0 +1,30 @@
+# The README's two commands. Each bootstraps a fresh Debian bookworm machine:
+# installs missing packages, configures, builds, then runs.
+BUILD_DIR ?= build
+JOBS      ?= 2
+DECK      ?= inputs/sphere-on-half-space.xml
+OUTPUT    ?= output/demo
+
+.PHONY: demo test build configure deps clean bench
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release > $(BUILD_DIR).configure.log 2>&1 \
+	  || (cat $(BUILD_DIR).configure.log; exit 1)
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j$(JOBS)
+
+demo: build
+	$(BUILD_DIR)/bin/cgcm $(DECK) Output/Directory=$(OUTPUT)
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+bench: build
+	@bash bench/run-all.sh $(BUILD_DIR)
+
+clean:
+	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

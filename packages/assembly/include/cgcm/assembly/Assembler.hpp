@@ -1,0 +1,97 @@
+#pragma once
+// Assembly of the bulk internal force and tangent into Tpetra objects.
+//
+// Element kernels (package fem) run in a Kokkos::parallel_for over the cells
+// this rank owns and scatter into overlap (owned + shared) views with atomic
+// adds; Tpetra then sums shared rows into their owners. The matrix graph is
+// the union of the cell cliques and optional extra node couplings (interaction
+// pairs), which may be replaced between solves.
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <Kokkos_Core.hpp>
+
+#include "cgcm/assembly/DofMap.hpp"
+#include "cgcm/material/NeoHookean.hpp"
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::assembly {
+
+enum class Formulation { PlaneStrain, Axisymmetric, ThreeD };
+
+const char* formulationName(Formulation f);
+/// Spatial dimension of the unknowns of a formulation.
+int formulationDim(Formulation f);
+
+/// Wall-clock seconds spent in evaluations, accumulated since construction.
+struct AssemblyTimings {
+  double residual = 0.0;     ///< residual-only evaluations of the bulk
+  double jacobian = 0.0;     ///< residual + tangent evaluations of the bulk (incl. fill)
+  int residualCalls = 0;
+  int jacobianCalls = 0;
+};
+
+class Assembler {
+ public:
+  Assembler(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
+            const material::NeoHookean& material);
+
+  const DofMap& dofs() const { return *dofs_; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
+  Formulation formulation() const { return formulation_; }
+
+  /// Couplings (row node, column node) added to the cell cliques in the graph.
+  /// Rows must be nodes of this rank's overlap map. Takes effect on the next graph().
+  void setExtraCouplings(std::vector<std::pair<LocalIndex, LocalIndex>> nodePairs);
+  /// The current graph (built on first use and after setExtraCouplings).
+  Teuchos::RCP<const Graph> graph();
+  /// A new zero matrix on the current graph.
+  Teuchos::RCP<Matrix> createMatrix();
+  /// Incremented whenever the graph is rebuilt: matrices of older graphs are stale.
+  int graphVersion() const { return graphVersion_; }
+
+  /// Internal force f_int(u) (owned rows, before boundary conditions); if J is
+  /// given, also its tangent (J must come from createMatrix() of this graph).
+  /// Collective. Throws InvertedElementError on every rank if any cell has J <= 0.
+  void evaluate(const Vector& u, Vector& f, Matrix* J);
+
+  /// Current nodal coordinates x = X + u of every overlap node, as imported for the last evaluate().
+  const Vector& overlapDisplacement() const { return *uOverlap_; }
+
+  const AssemblyTimings& timings() const { return timings_; }
+
+  /// Sum of component `component` of the owned entries of `f` over a node set (collective).
+  Real sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const;
+
+ private:
+  void buildGraph();
+  void cacheColumnIndices(const Matrix& J);
+
+  Teuchos::RCP<const DofMap> dofs_;
+  std::shared_ptr<const mesh::Mesh> mesh_;
+  Formulation formulation_;
+  material::NeoHookean material_;
+  int dim_;
+
+  // per block: this rank's cells, their overlap dof ids and reference coordinates
+  struct BlockData {
+    mesh::CellType type;
+    int numNodes;
+    Kokkos::View<LocalIndex**, Kokkos::LayoutRight> dofLids;  // [cell][a*dim+i], overlap local ids
+    Kokkos::View<LocalIndex**, Kokkos::LayoutRight> colLids;  // [cell][a*dim+i], matrix column ids
+    Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i]
+  };
+  std::vector<BlockData> blocks_;
+
+  std::vector<std::pair<LocalIndex, LocalIndex>> extraCouplings_;
+  Teuchos::RCP<Graph> graph_;
+  int graphVersion_ = 0;
+  int colLidsVersion_ = -1;
+
+  Teuchos::RCP<Vector> uOverlap_, fOverlap_;
+  Teuchos::RCP<const Export> exporter_;
+  AssemblyTimings timings_;
+};
+
+}  // namespace cgcm::assembly

@@ -1,0 +1,47 @@
+#pragma once
+// Distribution of cells and degrees of freedom over MPI ranks.
+//
+// Cells are numbered mesh-wide (block after block) and split into contiguous
+// ranges, one per rank: each cell is evaluated by exactly one rank. A node is
+// owned by the lowest rank whose cells touch it. Degree of freedom (node n,
+// component i) has global index n * dofsPerNode + i.
+#include <vector>
+
+#include "cgcm/assembly/TpetraTypes.hpp"
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::assembly {
+
+class DofMap {
+ public:
+  DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode);
+
+  const Teuchos::RCP<const Comm>& comm() const { return comm_; }
+  int dofsPerNode() const { return dofsPerNode_; }
+  /// Dofs owned by this rank (rows of the distributed system).
+  const Teuchos::RCP<const Map>& ownedMap() const { return ownedMap_; }
+  /// Owned dofs first, then the dofs of ghost nodes touched by local cells.
+  const Teuchos::RCP<const Map>& overlapMap() const { return overlapMap_; }
+  const Teuchos::RCP<const Import>& ownedToOverlap() const { return importer_; }
+
+  /// Cells evaluated by this rank, per element block (block-local cell indices).
+  const std::vector<LocalIndex>& localCells(std::size_t block) const { return localCells_[block]; }
+  /// Rank that evaluates the mesh-wide cell `cell`.
+  int cellOwner(LocalIndex cell) const;
+  bool ownsNode(LocalIndex node) const { return nodeOwner_[node] == comm_->getRank(); }
+  int nodeOwner(LocalIndex node) const { return nodeOwner_[node]; }
+  GlobalIndex dof(LocalIndex node, int component) const {
+    return GlobalIndex(node) * dofsPerNode_ + component;
+  }
+
+ private:
+  Teuchos::RCP<const Comm> comm_;
+  int dofsPerNode_;
+  LocalIndex numCells_;
+  std::vector<int> nodeOwner_;
+  std::vector<std::vector<LocalIndex>> localCells_;
+  Teuchos::RCP<const Map> ownedMap_, overlapMap_;
+  Teuchos::RCP<const Import> importer_;
+};
+
+}  // namespace cgcm::assembly

@@ -1,0 +1,123 @@
+#include "cgcm/io/Deck.hpp"
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "cgcm/core/Error.hpp"
+
+namespace cgcm::io {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  const auto e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+double parseDouble(const std::string& path, const std::string& text) {
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || trim(text.substr(used)) != "")
+    throw InputError(path + ": \"" + text + "\" is not a number");
+  return v;
+}
+
+// Lists the names of a sublist's entries, for error messages.
+std::string entryNames(const Teuchos::ParameterList& list) {
+  std::string names;
+  for (auto it = list.begin(); it != list.end(); ++it)
+    names += (names.empty() ? "" : ", ") + ("\"" + list.name(it) + "\"");
+  return names;
+}
+
+}  // namespace
+
+Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
+  std::ifstream probe(path);
+  if (!probe) throw InputError("cannot read the input deck \"" + path + "\"");
+  try {
+    return Teuchos::getParametersFromXmlFile(path);
+  } catch (const std::exception& e) {
+    throw InputError("input deck \"" + path + "\" is not a valid XML parameter list: " + e.what());
+  }
+}
+
+void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
+                    const std::vector<std::string>& overrides) {
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("command-line argument \"" + o + "\" is not of the form Path/To/Parameter=value");
+    const std::string path = trim(o.substr(0, eq)), text = trim(o.substr(eq + 1));
+    std::vector<std::string> parts;
+    std::stringstream ss(path);
+    for (std::string part; std::getline(ss, part, '/');) parts.push_back(part);
+    const Teuchos::ParameterList* v = &valid;
+    Teuchos::ParameterList* d = &deck;
+    std::string prefix;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      if (!v->isSublist(parts[i]))
+        throw InputError("override " + path + ": \"" + prefix + parts[i] + "\" is not a parameter group; valid at " +
+                         (prefix.empty() ? "top level" : prefix) + ": " + entryNames(*v));
+      v = &v->sublist(parts[i]);
+      d = &d->sublist(parts[i]);
+      prefix += parts[i] + "/";
+    }
+    const std::string& name = parts.back();
+    if (!v->isParameter(name) || v->isSublist(name))
+      throw InputError("override " + path + ": unknown parameter \"" + name + "\"; valid in " +
+                       (prefix.empty() ? "top level" : prefix) + ": " + entryNames(*v));
+    const Teuchos::ParameterEntry& entry = v->getEntry(name);
+    if (entry.isType<double>()) {
+      d->set(name, parseDouble(path, text));
+    } else if (entry.isType<int>()) {
+      const double x = parseDouble(path, text);
+      if (x != double(int(x))) throw InputError(path + ": \"" + text + "\" is not an integer");
+      d->set(name, int(x));
+    } else if (entry.isType<bool>()) {
+      if (text == "true" || text == "1") d->set(name, true);
+      else if (text == "false" || text == "0") d->set(name, false);
+      else throw InputError(path + ": \"" + text + "\" is not true or false");
+    } else if (entry.isType<std::string>()) {
+      d->set(name, text);
+    } else if (entry.isType<Teuchos::Array<double>>()) {
+      std::string body = text;
+      if (!body.empty() && body.front() == '{') body = body.substr(1);
+      if (!body.empty() && body.back() == '}') body.pop_back();
+      Teuchos::Array<double> values;
+      std::stringstream vs(body);
+      for (std::string item; std::getline(vs, item, ',');) values.push_back(parseDouble(path, trim(item)));
+      d->set(name, values);
+    } else {
+      throw InputError(path + ": this parameter cannot be set from the command line");
+    }
+  }
+}
+
+void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid) {
+  try {
+    deck.validateParametersAndSetDefaults(valid);
+  } catch (const Teuchos::Exceptions::InvalidParameter& e) {
+    // Teuchos' messages name the parameter, its sublist and the valid choices.
+    throw InputError(std::string("invalid input deck:\n") + e.what());
+  }
+}
+
+void printHelp(std::ostream& out, const Teuchos::ParameterList& valid) {
+  valid.print(out, Teuchos::ParameterList::PrintOptions().showDoc(true).indent(2).showTypes(true));
+}
+
+void writeDeck(const Teuchos::ParameterList& deck, const std::string& path) {
+  Teuchos::writeParameterListToXmlFile(deck, path);
+}
+
+}  // namespace cgcm::io

@@ -1,0 +1,54 @@
+#pragma once
+// Structured mesh generators for tests, benchmarks and the built-in geometries.
+#include <functional>
+
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::mesh {
+
+/// Maps a parameter s in [0, 1] to [0, 1], monotonically (mesh grading).
+using Grading = std::function<Real(Real)>;
+/// Uniform spacing.
+Real uniformGrading(Real s);
+/// Spacing that is fine near s = 0: s -> s^power (power > 1 concentrates nodes at 0).
+Grading powerGrading(Real power);
+
+struct RectangleSpec {
+  Real x0 = 0.0, y0 = 0.0;      ///< lower-left corner
+  Real lx = 1.0, ly = 1.0;      ///< side lengths
+  int nx = 1, ny = 1;           ///< cells per direction
+  Grading gradeX = uniformGrading, gradeY = uniformGrading;
+  int body = 0;
+  std::string name = "block";
+};
+
+/// Quad4 mesh of a rectangle. Node sets: left, right, bottom, top (x = x0,
+/// x = x0 + lx, y = y0, y = y0 + ly). Its surface is filled in.
+Mesh rectangle(const RectangleSpec& spec);
+
+struct BoxSpec {
+  Real x0 = 0.0, y0 = 0.0, z0 = 0.0;
+  Real lx = 1.0, ly = 1.0, lz = 1.0;
+  int nx = 1, ny = 1, nz = 1;
+  bool tetrahedra = false;      ///< split every hexahedron into 6 tetrahedra
+  int body = 0;
+  std::string name = "block";
+};
+
+/// Hex8 (or Tet4) mesh of a box. Node sets: xmin, xmax, ymin, ymax, zmin, zmax.
+Mesh box(const BoxSpec& spec);
+
+/// Appends `other` to `mesh` as new bodies (body ids shifted by mesh.numBodies);
+/// node-set names of `other` get `prefix` prepended. Dimensions must agree.
+void append(Mesh& mesh, const Mesh& other, const std::string& prefix);
+
+/// Recomputes mesh.surfaces from the element blocks: one surface per body,
+/// all facets used by exactly one cell, oriented outward.
+void buildSurfaces(Mesh& mesh);
+
+/// Moves every node not in a boundary node set by a random amount up to
+/// `fraction` of the smallest cell size (deterministic for a given seed):
+/// distorted meshes for patch tests.
+void perturbInteriorNodes(Mesh& mesh, Real fraction, unsigned seed);
+
+}  // namespace cgcm::mesh

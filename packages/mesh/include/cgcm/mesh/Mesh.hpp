@@ -1,0 +1,58 @@
+#pragma once
+// In-memory finite-element mesh of one or more bodies.
+//
+// The mesh is replicated on every MPI rank (research-size problems); the
+// distribution of degrees of freedom and the element partition are made by
+// the assembly package. Node indices are global and 0-based.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cgcm/core/Types.hpp"
+
+namespace cgcm::mesh {
+
+enum class CellType { Quad4, Hex8, Tet4 };
+
+int nodesPerCell(CellType type);
+const char* cellTypeName(CellType type);
+
+/// Cells of one type belonging to one body.
+struct ElementBlock {
+  std::string name;
+  int body = 0;
+  CellType type = CellType::Quad4;
+  std::vector<LocalIndex> connectivity;  ///< nodesPerCell(type) node indices per cell
+  LocalIndex numCells() const { return LocalIndex(connectivity.size() / nodesPerCell(type)); }
+};
+
+/// Boundary surface of one body: segments (2D) or triangles/quads (3D),
+/// oriented so that the outward normal is
+///   2D: n = (t_y, -t_x)/|t| with t = x_b - x_a  (body on the left of a->b),
+///   3D: right-hand rule over the facet's node order.
+struct Surface {
+  int body = 0;
+  int nodesPerFacet = 2;
+  std::vector<LocalIndex> facets;
+  std::vector<LocalIndex> facetCells;  ///< per facet: the cell it bounds (mesh-wide cell index)
+  LocalIndex numFacets() const { return LocalIndex(facets.size() / nodesPerFacet); }
+};
+
+struct Mesh {
+  int dim = 2;                    ///< spatial dimension of the coordinates (2 or 3)
+  std::vector<Real> coords;       ///< reference coordinates, dim per node
+  std::vector<ElementBlock> blocks;
+  std::map<std::string, std::vector<LocalIndex>> nodeSets;  ///< sorted, unique node indices
+  std::vector<Surface> surfaces;  ///< one per body, index = body id
+  int numBodies = 1;
+
+  LocalIndex numNodes() const { return LocalIndex(coords.size() / dim); }
+  LocalIndex numCells() const;
+  /// Mesh-wide index of the first cell of block b (cells are numbered block after block).
+  LocalIndex firstCellOfBlock(std::size_t b) const;
+  Real coord(LocalIndex node, int i) const { return coords[std::size_t(node) * dim + i]; }
+  /// Node set by name; throws InputError listing the available names.
+  const std::vector<LocalIndex>& nodeSet(const std::string& name) const;
+};
+
+}  // namespace cgcm::mesh

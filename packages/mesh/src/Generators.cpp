@@ -1,0 +1,230 @@
+#include "cgcm/mesh/Generators.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
+
+#include "cgcm/core/Error.hpp"
+
+namespace cgcm::mesh {
+
+Real uniformGrading(Real s) { return s; }
+
+Grading powerGrading(Real power) {
+  if (!(power >= 1.0)) throw InputError("mesh grading power must be >= 1, got " + std::to_string(power));
+  return [power](Real s) { return std::pow(s, power); };
+}
+
+namespace {
+
+void checkCounts(const char* what, std::initializer_list<int> counts) {
+  for (int n : counts)
+    if (n < 1) throw InputError(std::string(what) + ": cell counts must be >= 1");
+}
+
+void addNodeSet(Mesh& m, const std::string& name, std::vector<LocalIndex> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  m.nodeSets[name] = std::move(nodes);
+}
+
+// Outward-oriented local facets of each cell type (Exodus face order).
+const std::vector<std::vector<int>>& localFacets(CellType type) {
+  static const std::vector<std::vector<int>> quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  static const std::vector<std::vector<int>> hex = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                                                    {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  static const std::vector<std::vector<int>> tet = {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
+  switch (type) {
+    case CellType::Quad4: return quad;
+    case CellType::Hex8: return hex;
+    case CellType::Tet4: return tet;
+  }
+  return quad;
+}
+
+}  // namespace
+
+Mesh rectangle(const RectangleSpec& s) {
+  checkCounts("rectangle", {s.nx, s.ny});
+  Mesh m;
+  m.dim = 2;
+  m.numBodies = s.body + 1;
+  const int px = s.nx + 1, py = s.ny + 1;
+  m.coords.resize(std::size_t(px) * py * 2);
+  auto id = [px](int i, int j) { return LocalIndex(j * px + i); };
+  for (int j = 0; j < py; ++j)
+    for (int i = 0; i < px; ++i) {
+      m.coords[2 * id(i, j) + 0] = s.x0 + s.lx * s.gradeX(Real(i) / s.nx);
+      m.coords[2 * id(i, j) + 1] = s.y0 + s.ly * s.gradeY(Real(j) / s.ny);
+    }
+  ElementBlock b;
+  b.name = s.name;
+  b.body = s.body;
+  b.type = CellType::Quad4;
+  b.connectivity.reserve(std::size_t(s.nx) * s.ny * 4);
+  for (int j = 0; j < s.ny; ++j)
+    for (int i = 0; i < s.nx; ++i)
+      for (LocalIndex n : {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}) b.connectivity.push_back(n);
+  m.blocks.push_back(std::move(b));
+  std::vector<LocalIndex> left, right, bottom, top;
+  for (int j = 0; j < py; ++j) left.push_back(id(0, j)), right.push_back(id(s.nx, j));
+  for (int i = 0; i < px; ++i) bottom.push_back(id(i, 0)), top.push_back(id(i, s.ny));
+  addNodeSet(m, "left", left);
+  addNodeSet(m, "right", right);
+  addNodeSet(m, "bottom", bottom);
+  addNodeSet(m, "top", top);
+  buildSurfaces(m);
+  return m;
+}
+
+Mesh box(const BoxSpec& s) {
+  checkCounts("box", {s.nx, s.ny, s.nz});
+  Mesh m;
+  m.dim = 3;
+  m.numBodies = s.body + 1;
+  const int px = s.nx + 1, py = s.ny + 1, pz = s.nz + 1;
+  m.coords.resize(std::size_t(px) * py * pz * 3);
+  auto id = [px, py](int i, int j, int k) { return LocalIndex((k * py + j) * px + i); };
+  for (int k = 0; k < pz; ++k)
+    for (int j = 0; j < py; ++j)
+      for (int i = 0; i < px; ++i) {
+        const std::size_t n = id(i, j, k);
+        m.coords[3 * n + 0] = s.x0 + s.lx * i / s.nx;
+        m.coords[3 * n + 1] = s.y0 + s.ly * j / s.ny;
+        m.coords[3 * n + 2] = s.z0 + s.lz * k / s.nz;
+      }
+  ElementBlock b;
+  b.name = s.name;
+  b.body = s.body;
+  b.type = s.tetrahedra ? CellType::Tet4 : CellType::Hex8;
+  // Kuhn split along the 0-6 diagonal: conforming between neighbours, all positive.
+  static const int kTets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                  {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+  for (int k = 0; k < s.nz; ++k)
+    for (int j = 0; j < s.ny; ++j)
+      for (int i = 0; i < s.nx; ++i) {
+        const LocalIndex h[8] = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),
+                                 id(i, j + 1, k),     id(i, j, k + 1),         id(i + 1, j, k + 1),
+                                 id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+        if (s.tetrahedra) {
+          for (const auto& t : kTets)
+            for (int a = 0; a < 4; ++a) b.connectivity.push_back(h[t[a]]);
+        } else {
+          b.connectivity.insert(b.connectivity.end(), h, h + 8);
+        }
+      }
+  m.blocks.push_back(std::move(b));
+  std::vector<LocalIndex> sets[6];
+  for (int k = 0; k < pz; ++k)
+    for (int j = 0; j < py; ++j)
+      for (int i = 0; i < px; ++i) {
+        const LocalIndex n = id(i, j, k);
+        if (i == 0) sets[0].push_back(n);
+        if (i == s.nx) sets[1].push_back(n);
+        if (j == 0) sets[2].push_back(n);
+        if (j == s.ny) sets[3].push_back(n);
+        if (k == 0) sets[4].push_back(n);
+        if (k == s.nz) sets[5].push_back(n);
+      }
+  const char* names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+  for (int f = 0; f < 6; ++f) addNodeSet(m, names[f], sets[f]);
+  buildSurfaces(m);
+  return m;
+}
+
+void append(Mesh& mesh, const Mesh& other, const std::string& prefix) {
+  if (mesh.dim != other.dim) throw InputError("cannot append a mesh of another dimension");
+  const LocalIndex offset = mesh.numNodes();
+  const int bodyOffset = mesh.numBodies;
+  mesh.coords.insert(mesh.coords.end(), other.coords.begin(), other.coords.end());
+  for (ElementBlock b : other.blocks) {
+    for (auto& n : b.connectivity) n += offset;
+    b.body += bodyOffset;
+    mesh.blocks.push_back(std::move(b));
+  }
+  for (const auto& [name, nodes] : other.nodeSets) {
+    std::vector<LocalIndex> shifted(nodes);
+    for (auto& n : shifted) n += offset;
+    mesh.nodeSets[prefix + name] = std::move(shifted);
+  }
+  mesh.numBodies += other.numBodies;
+  buildSurfaces(mesh);
+}
+
+void buildSurfaces(Mesh& mesh) {
+  mesh.surfaces.assign(mesh.numBodies, Surface{});
+  for (int body = 0; body < mesh.numBodies; ++body) {
+    Surface& s = mesh.surfaces[body];
+    s.body = body;
+    s.nodesPerFacet = 0;
+    struct FacetUse {
+      int count;
+      std::vector<LocalIndex> nodes;  // oriented
+      LocalIndex cell;
+    };
+    // sorted node key -> use; `order` keeps the output deterministic
+    std::map<std::vector<LocalIndex>, FacetUse> faces;
+    std::vector<std::vector<LocalIndex>> order;
+    for (std::size_t bi = 0; bi < mesh.blocks.size(); ++bi) {
+      const auto& b = mesh.blocks[bi];
+      if (b.body != body) continue;
+      const int npc = nodesPerCell(b.type);
+      const LocalIndex firstCell = mesh.firstCellOfBlock(bi);
+      for (LocalIndex c = 0; c < b.numCells(); ++c) {
+        const LocalIndex* cell = &b.connectivity[std::size_t(c) * npc];
+        for (const auto& lf : localFacets(b.type)) {
+          std::vector<LocalIndex> facet;
+          for (int a : lf) facet.push_back(cell[a]);
+          std::vector<LocalIndex> key(facet);
+          std::sort(key.begin(), key.end());
+          auto [it, inserted] = faces.try_emplace(key, FacetUse{0, facet, firstCell + c});
+          if (inserted) order.push_back(key);
+          ++it->second.count;
+        }
+      }
+    }
+    for (const auto& key : order) {
+      const FacetUse& use = faces[key];
+      if (use.count != 1) continue;
+      const auto& facet = use.nodes;
+      if (s.nodesPerFacet == 0) s.nodesPerFacet = int(facet.size());
+      if (int(facet.size()) != s.nodesPerFacet)
+        throw InputError("body " + std::to_string(body) + " mixes boundary facets of different kinds");
+      s.facets.insert(s.facets.end(), facet.begin(), facet.end());
+      s.facetCells.push_back(use.cell);
+    }
+    if (s.nodesPerFacet == 0) s.nodesPerFacet = mesh.dim == 2 ? 2 : 3;
+  }
+}
+
+void perturbInteriorNodes(Mesh& mesh, Real fraction, unsigned seed) {
+  std::set<LocalIndex> boundary;
+  for (const auto& s : mesh.surfaces) boundary.insert(s.facets.begin(), s.facets.end());
+  // smallest edge length over all cells
+  Real hmin = std::numeric_limits<Real>::max();
+  for (const auto& b : mesh.blocks) {
+    const int npc = nodesPerCell(b.type);
+    for (LocalIndex c = 0; c < b.numCells(); ++c)
+      for (int a = 0; a < npc; ++a)
+        for (int e = a + 1; e < npc; ++e) {
+          Real d2 = 0.0;
+          for (int i = 0; i < mesh.dim; ++i) {
+            const Real d = mesh.coord(b.connectivity[c * npc + a], i) - mesh.coord(b.connectivity[c * npc + e], i);
+            d2 += d * d;
+          }
+          hmin = std::min(hmin, std::sqrt(d2));
+        }
+  }
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<Real> dist(-1.0, 1.0);
+  for (LocalIndex n = 0; n < mesh.numNodes(); ++n) {
+    if (boundary.count(n)) continue;
+    for (int i = 0; i < mesh.dim; ++i) mesh.coords[std::size_t(n) * mesh.dim + i] += fraction * hmin * dist(gen);
+  }
+}
+
+}  // namespace cgcm::mesh

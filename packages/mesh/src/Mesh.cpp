@@ -1,0 +1,47 @@
+#include "cgcm/mesh/Mesh.hpp"
+
+#include "cgcm/core/Error.hpp"
+
+namespace cgcm::mesh {
+
+int nodesPerCell(CellType type) {
+  switch (type) {
+    case CellType::Quad4: return 4;
+    case CellType::Hex8: return 8;
+    case CellType::Tet4: return 4;
+  }
+  return 0;
+}
+
+const char* cellTypeName(CellType type) {
+  switch (type) {
+    case CellType::Quad4: return "QUAD4";
+    case CellType::Hex8: return "HEX8";
+    case CellType::Tet4: return "TETRA4";
+  }
+  return "?";
+}
+
+LocalIndex Mesh::numCells() const {
+  LocalIndex n = 0;
+  for (const auto& b : blocks) n += b.numCells();
+  return n;
+}
+
+LocalIndex Mesh::firstCellOfBlock(std::size_t b) const {
+  LocalIndex n = 0;
+  for (std::size_t i = 0; i < b; ++i) n += blocks[i].numCells();
+  return n;
+}
+
+const std::vector<LocalIndex>& Mesh::nodeSet(const std::string& name) const {
+  auto it = nodeSets.find(name);
+  if (it == nodeSets.end()) {
+    std::string names;
+    for (const auto& [n, s] : nodeSets) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
+    throw InputError("unknown node set \"" + name + "\"; this mesh has: " + names);
+  }
+  return it->second;
+}
+
+}  // namespace cgcm::mesh

@@ -1,0 +1,27 @@
+#pragma once
+// Linear solvers through Stratimikos, with Ifpack2 and MueLu registered.
+//
+// Deck sublist "Linear Solver":
+//   Type = "auto" (default): Amesos2 KLU2 on one rank, Belos GMRES + Ifpack2 on more;
+//          "Amesos2 KLU2": direct, one rank only (Debian's KLU2 is wrong on several ranks);
+//          "Belos GMRES + Ifpack2", "Belos GMRES + MueLu": iterative;
+//          "Stratimikos": the sublist "Stratimikos" is handed to Stratimikos unchanged.
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include "cgcm/core/Types.hpp"
+
+namespace cgcm::solver {
+
+/// Valid parameters (with defaults and documentation) of the "Linear Solver" sublist.
+Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters();
+
+/// The Stratimikos parameter list the settings stand for on `numRanks` ranks.
+/// Throws InputError for a direct solver on more than one rank.
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks);
+
+/// Builds the solver factory from validated settings.
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const Teuchos::ParameterList& settings,
+                                                                          int numRanks);
+
+}  // namespace cgcm::solver

@@ -1,0 +1,55 @@
+#pragma once
+// Displacement-controlled load stepping along a piecewise-linear path of the
+// load parameter p, with adaptive increments: a step that fails (no Newton
+// convergence, inverted element) is cut back and redone from the last
+// converged state; it is never accepted.
+#include <Teuchos_ParameterList.hpp>
+
+#include <functional>
+#include <vector>
+
+#include "cgcm/solver/NewtonSolver.hpp"
+
+namespace cgcm::solver {
+
+struct LoadPathSettings {
+  std::vector<Real> path{0.0, 1.0};   ///< waypoints of p; the run starts at path[0]
+  Real initialIncrement = 0.01;
+  Real minIncrement = 1e-8;
+  Real maxIncrement = 0.05;
+  int easyIterations = 4;             ///< grow the increment after steps this easy
+  Real growth = 1.5;
+  Real cutback = 0.5;
+
+  /// Valid parameters of the "Loading" sublist.
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+  /// Reads and checks a validated "Loading" sublist (increments consistent, path of >= 2 distinct points).
+  static LoadPathSettings fromParameters(const Teuchos::ParameterList& p);
+};
+
+struct StepInfo {
+  int step = 0;       ///< accepted steps so far (0 = initial state)
+  Real load = 0.0;
+  NewtonResult newton;
+  int cutbacks = 0;   ///< failed attempts before this step converged
+};
+
+class LoadStepper {
+ public:
+  using Observer = std::function<void(const StepInfo&, const Vector& u)>;
+
+  LoadStepper(Teuchos::RCP<ModelEvaluator> model, NewtonSolver& newton, const LoadPathSettings& settings)
+      : model_(std::move(model)), newton_(newton), settings_(settings) {}
+
+  /// Runs the whole path from u (initial guess at path[0]); calls `observer`
+  /// after every accepted step. Throws NumericalError if a step fails below the
+  /// minimum increment (everything observed so far stays valid).
+  void run(Vector& u, const Observer& observer);
+
+ private:
+  Teuchos::RCP<ModelEvaluator> model_;
+  NewtonSolver& newton_;
+  LoadPathSettings settings_;
+};
+
+}  // namespace cgcm::solver

@@ -1,0 +1,103 @@
+#include "cgcm/solver/LinearSolver.hpp"
+
+#include <Stratimikos_DefaultLinearSolverBuilder.hpp>
+#include <Stratimikos_MueLuHelpers.hpp>
+#include <Teuchos_AbstractFactoryStd.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Thyra_Ifpack2PreconditionerFactory.hpp>
+
+#include "cgcm/assembly/TpetraTypes.hpp"
+#include "cgcm/core/Error.hpp"
+
+namespace cgcm::solver {
+
+namespace {
+const char* const kTypes[] = {"auto", "Amesos2 KLU2", "Belos GMRES + Ifpack2", "Belos GMRES + MueLu", "Stratimikos"};
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
+  static Teuchos::RCP<Teuchos::ParameterList> valid;
+  if (!valid.is_null()) return valid;
+  valid = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
+  auto types = Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>(
+      kTypes[0], kTypes[1], kTypes[2], kTypes[3], kTypes[4])));
+  valid->set("Type", "auto",
+             "auto: Amesos2 KLU2 on one rank, Belos GMRES + Ifpack2 on several; or Amesos2 KLU2 (one rank "
+             "only), Belos GMRES + Ifpack2, Belos GMRES + MueLu, Stratimikos (use the Stratimikos sublist as is)",
+             types);
+  auto positive = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
+  positive->setMin(1e-16);
+  valid->set("Tolerance", 1e-10, "relative residual tolerance of iterative solvers", positive);
+  auto posInt = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
+  posInt->setMin(1);
+  valid->set("Max Iterations", 1000, "iteration limit of iterative solvers", posInt);
+  valid->set("Krylov Space", 200, "GMRES restart length", posInt);
+  auto level = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
+  level->setMin(0);
+  valid->set("ILU Fill Level", 2, "level of fill of the Ifpack2 RILUK preconditioner", level);
+  valid->sublist("Stratimikos", false, "Stratimikos parameter list, used as is when Type = Stratimikos")
+      .disableRecursiveValidation();
+  return valid;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks) {
+  std::string type = settings.get<std::string>("Type");
+  if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
+  if (type == "auto") type = numRanks == 1 ? "Amesos2 KLU2" : "Belos GMRES + Ifpack2";
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("Stratimikos"));
+  if (type == "Amesos2 KLU2") {
+    if (numRanks > 1)
+      throw InputError("Solver/Linear Solver/Type = \"Amesos2 KLU2\" runs on one MPI rank only (this run has " +
+                       std::to_string(numRanks) +
+                       "; Debian's Amesos2 KLU2 returns wrong solutions on several ranks); use \"auto\", "
+                       "\"Belos GMRES + Ifpack2\" or \"Belos GMRES + MueLu\"");
+    p->set("Linear Solver Type", "Amesos2");
+    p->sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", "KLU2");
+    p->set("Preconditioner Type", "None");
+    return p;
+  }
+  p->set("Linear Solver Type", "Belos");
+  auto& belos = p->sublist("Linear Solver Types").sublist("Belos");
+  belos.set("Solver Type", "Block GMRES");
+  auto& gmres = belos.sublist("Solver Types").sublist("Block GMRES");
+  gmres.set("Convergence Tolerance", settings.get<double>("Tolerance"));
+  gmres.set("Maximum Iterations", settings.get<int>("Max Iterations"));
+  gmres.set("Num Blocks", settings.get<int>("Krylov Space"));
+  if (type == "Belos GMRES + Ifpack2") {
+    p->set("Preconditioner Type", "Ifpack2");
+    auto& ifp = p->sublist("Preconditioner Types").sublist("Ifpack2");
+    // RILUK on each rank's diagonal block (block Jacobi with incomplete LU).
+    ifp.set("Prec Type", "RILUK");
+    ifp.sublist("Ifpack2 Settings").set("fact: iluk level-of-fill", settings.get<int>("ILU Fill Level"));
+  } else {  // MueLu: smoothed aggregation, no direct coarse solve (KLU2 is wrong on several ranks)
+    p->set("Preconditioner Type", "MueLu");
+    auto& m = p->sublist("Preconditioner Types").sublist("MueLu");
+    m.set("verbosity", "none");
+    m.set("number of equations", 1);
+    m.set("coarse: type", "RELAXATION");
+    m.set("smoother: type", "RELAXATION");
+    m.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+    m.sublist("smoother: params").set("relaxation: sweeps", 2);
+  }
+  return p;
+}
+
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const Teuchos::ParameterList& settings,
+                                                                          int numRanks) {
+  using namespace assembly;
+  Stratimikos::DefaultLinearSolverBuilder builder;
+  builder.setPreconditioningStrategyFactory(
+      Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<Real>,
+                                  Thyra::Ifpack2PreconditionerFactory<CrsMatrix>>(),
+      "Ifpack2");
+  Stratimikos::enableMueLu<LocalIndex, GlobalIndex, Node>(builder);
+  auto params = stratimikosParameters(settings, numRanks);
+  try {
+    builder.setParameterList(params);
+  } catch (const std::exception& e) {
+    throw InputError(std::string("Solver/Linear Solver: Stratimikos rejected the parameters: ") + e.what());
+  }
+  return builder.createLinearSolveStrategy("");
+}
+
+}  // namespace cgcm::solver

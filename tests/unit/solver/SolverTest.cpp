@@ -1,0 +1,211 @@
+// System-level tests of assembly + Newton + load stepping on homogeneous and
+// inhomogeneous large-deformation problems with closed-form or FD references.
+#include <gtest/gtest.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "ClosedForm.hpp"
+#include "cgcm/app/Setup.hpp"
+#include "cgcm/app/Simulation.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/io/Deck.hpp"
+#include "cgcm/solver/LinearSolver.hpp"
+#include "cgcm/solver/LoadStepper.hpp"
+
+namespace cgcm {
+namespace {
+
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+
+RCP<ParameterList> deck(const std::vector<std::string>& overrides) {
+  auto d = Teuchos::rcp(new ParameterList("cgcm"));
+  io::applyOverrides(*d, *app::validParameters(), overrides);
+  io::validateDeck(*d, *app::validParameters());
+  return d;
+}
+
+// The assembled problem of a deck, ready for Newton.
+struct System {
+  app::ProblemSetup setup;
+  RCP<assembly::DofMap> dofs;
+  std::shared_ptr<assembly::Assembler> assembler;
+  std::shared_ptr<assembly::DirichletConditions> dirichlet;
+  RCP<solver::ModelEvaluator> model;
+
+  explicit System(const ParameterList& d) : setup(app::buildProblem(d)) {
+    auto comm = Tpetra::getDefaultComm();
+    dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
+    assembler = std::make_shared<assembly::Assembler>(dofs, setup.mesh, setup.formulation, setup.material);
+    dirichlet = std::make_shared<assembly::DirichletConditions>(dofs);
+    for (const auto& c : setup.conditions)
+      dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+    model = Teuchos::rcp(new solver::ModelEvaluator(
+        assembler, dirichlet, solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"), comm->getSize())));
+  }
+};
+
+const char* kFormulations[] = {"plane strain", "axisymmetric", "3D"};
+
+// Number of free lateral directions and the loaded area factor of the unit block.
+double loadedArea(const std::string& formulation, double lateralStretch) {
+  if (formulation == "plane strain") return lateralStretch;                // width 1, unit thickness
+  if (formulation == "axisymmetric") return M_PI * lateralStretch * lateralStretch;  // disc of radius 1
+  return lateralStretch * lateralStretch;                                  // 1 x 1 face
+}
+int lateralDirections(const std::string& formulation) { return formulation == "plane strain" ? 1 : 2; }
+
+TEST(LoadStepping, UniaxialCompressionMatchesClosedFormNeoHookean) {
+  // 30 % compression, roller faces: homogeneous state; P = sigma_zz * current area.
+  for (std::string form : kFormulations) {
+    for (std::string element : {"hex8", "tet4"}) {
+      if (form != "3D" && element == "tet4") continue;
+      for (std::string law : {"(Lambda/2)(ln J)^2", "(Lambda/4)(J^2-1-2 ln J)"}) {
+        SCOPED_TRACE(form + " " + element + " " + law);
+        auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Element=" + element,
+                       "Geometry/Block/Cells X=2", "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=2",
+                       "Material/Poisson's Ratio=0.3", "Material/Volumetric Energy=" + law,
+                       "Loading/Approach Path={0, -0.3}", "Loading/Initial Increment=0.1",
+                       "Loading/Max Increment=0.1", "Output/Print Steps=false",
+                       "Output/Directory=" + std::string(CGCM_TEST_OUTPUT) + "/uniaxial"});
+        std::ostringstream log;
+        const auto run = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
+        ASSERT_TRUE(run.completed) << run.failure;
+        ASSERT_EQ(run.curve.size(), 4u);
+        const auto setup = app::buildProblem(*d);
+        for (const auto& pt : run.curve) {
+          double lateral = 1.0;
+          const double sigma = test::uniaxialCauchyStress(setup.material, 1.0 + pt.u, lateralDirections(form), lateral);
+          const double expected = sigma * loadedArea(form, lateral);
+          EXPECT_NEAR(pt.P, expected, 1e-9 * (1.0 + std::abs(expected))) << "u = " << pt.u;
+        }
+        EXPECT_LT(run.curve.back().P, -0.2);  // really compressed
+      }
+    }
+  }
+}
+
+TEST(LoadStepping, PatchTestOnDistortedMeshesReproducesHomogeneousDeformation) {
+  for (std::string form : kFormulations) {
+    for (std::string element : {"hex8", "tet4"}) {
+      if (form != "3D" && element == "tet4") continue;
+      SCOPED_TRACE(form + " " + element);
+      auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Element=" + element,
+                     "Geometry/Block/Cells X=3", "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=3",
+                     "Geometry/Block/Distortion=0.3", "Loading/Approach Path={0, -0.25}",
+                     "Loading/Initial Increment=0.125", "Loading/Max Increment=0.125"});
+      System sys(*d);
+      solver::NewtonSolver newton(sys.model, solver::NewtonSettings{});
+      solver::LoadStepper stepper(sys.model, newton, solver::LoadPathSettings::fromParameters(d->sublist("Loading")));
+      assembly::Vector u(sys.model->map());
+      stepper.run(u, [](const solver::StepInfo&, const assembly::Vector&) {});
+
+      const int dim = sys.setup.mesh->dim;
+      double lateral = 1.0;
+      test::uniaxialCauchyStress(sys.setup.material, 0.75, lateralDirections(form), lateral);
+      auto uv = u.getLocalViewHost(Tpetra::Access::ReadOnly);
+      const auto& map = *u.getMap();
+      double maxError = 0.0;
+      for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+        const auto gid = map.getGlobalElement(LocalIndex(lid));
+        const LocalIndex node = LocalIndex(gid / dim);
+        const int i = int(gid % dim);
+        const double stretch = (i == dim - 1) ? 0.75 : lateral;
+        const double exact = (stretch - 1.0) * sys.setup.mesh->coord(node, i);
+        maxError = std::max(maxError, std::abs(uv(lid, 0) - exact));
+      }
+      double globalError = 0.0;
+      Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MAX, maxError, Teuchos::outArg(globalError));
+      EXPECT_LT(globalError, 1e-10);
+    }
+  }
+}
+
+TEST(Newton, ConvergesQuadraticallyOnLargeInhomogeneousDeformation) {
+  // Clamped loaded face: inhomogeneous state; one 20 % step from rest.
+  for (std::string form : kFormulations) {
+    SCOPED_TRACE(form);
+    auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Loaded Face=clamped", "Geometry/Block/Cells X=3",
+                   "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=3", "Loading/Approach Path={0, -0.2}",
+                   "Loading/Initial Increment=0.2", "Loading/Max Increment=0.2"});
+    System sys(*d);
+    solver::NewtonSettings settings;
+    settings.relativeTolerance = 1e-14;
+    settings.absoluteTolerance = 1e-13;
+    solver::NewtonSolver newton(sys.model, settings);
+    assembly::Vector u(sys.model->map());
+    sys.model->setLoad(-0.2);
+    sys.dirichlet->impose(-0.2, u);
+    const auto r = newton.solve(u);
+    ASSERT_TRUE(r.converged) << r.failure;
+    EXPECT_LE(r.iterations, 8);
+    const auto& n = r.residualNorms;
+    int quadraticPairs = 0;
+    for (std::size_t k = 1; k + 1 < n.size(); ++k) {
+      const double rk = n[k] / n[0], rk1 = n[k + 1] / n[0];
+      if (rk > 1e-2 || rk1 < 1e-12) continue;  // pre-asymptotic or at round-off
+      EXPECT_LT(rk1, 10.0 * rk * rk) << "iteration " << k << ": " << rk << " -> " << rk1;
+      ++quadraticPairs;
+    }
+    EXPECT_GE(quadraticPairs, 1);
+  }
+}
+
+TEST(ModelEvaluator, JacobianMatchesFiniteDifferencesOfResidual) {
+  using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
+  for (std::string form : kFormulations) {
+    SCOPED_TRACE(form);
+    auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Loaded Face=clamped", "Geometry/Block/Cells X=2",
+                   "Geometry/Block/Cells Y=2", "Geometry/Block/Cells Z=2", "Geometry/Block/Distortion=0.2"});
+    System sys(*d);
+    const auto& map = sys.model->map();
+    assembly::Vector u(map), v(map), Jv(map), fp(map), fm(map), up(map), um(map);
+    u.randomize(-0.05, 0.05);
+    v.randomize(-1.0, 1.0);
+    sys.model->setLoad(-0.03);
+    auto W = sys.assembler->createMatrix();
+    sys.assembler->evaluate(u, fp, W.get());
+    sys.dirichlet->applyToJacobian(*W);
+    W->apply(v, Jv);
+    const double h = 1e-6;
+    up.update(1.0, u, h, v, 0.0);
+    um.update(1.0, u, -h, v, 0.0);
+    sys.assembler->evaluate(up, fp, nullptr);
+    sys.dirichlet->applyToResidual(up, -0.03, fp);
+    sys.assembler->evaluate(um, fm, nullptr);
+    sys.dirichlet->applyToResidual(um, -0.03, fm);
+    fp.update(-1.0 / (2 * h), fm, 1.0 / (2 * h));  // (f+ - f-)/2h
+    fp.update(-1.0, Jv, 1.0);
+    EXPECT_LT(fp.norm2(), 1e-6 * Jv.norm2());
+  }
+}
+
+TEST(Input, BadDecksStopWithMessagesNamingTheParameter) {
+  auto expectError = [](const std::vector<std::string>& overrides, const std::string& fragment) {
+    try {
+      auto d = deck(overrides);
+      app::buildProblem(*d);
+      solver::LoadPathSettings::fromParameters(d->sublist("Loading"));
+      ADD_FAILURE() << "no error for " << overrides.front();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  expectError({"Material/Poisson's Ratio=0.5"}, "Poisson's Ratio");
+  expectError({"Material/Young's Modulus=-1"}, "Young's Modulus");
+  expectError({"Problem/Formulation=2D"}, "Formulation");
+  expectError({"Geometry/Block/Cells X=0"}, "Cells X");
+  expectError({"Loading/Approach Path={0.1}"}, "Approach Path");
+  expectError({"Loading/Approach Path={0, 0.1, 0.2}"}, "Approach Path");
+  expectError({"Material/Youngs Modulus=1"}, "Youngs Modulus");
+  expectError({"Solver/Newton/Line Search=trust region"}, "Line Search");
+}
+
+}  // namespace
+}  // namespace cgcm
