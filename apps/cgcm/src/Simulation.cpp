@@ -25,7 +25,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   ProblemSetup setup = buildProblem(deck);
   const auto loading = solver::LoadPathSettings::fromParameters(deck.sublist("Loading"));
   const auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
-  auto linearSolver = solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize());
+  auto linearSolver = solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize(),
+                                                assembly::formulationDim(setup.formulation));
   for (const auto& c : setup.conditions) setup.mesh->nodeSet(c.nodeSet);
 
   if (root) {

@@ -40,7 +40,8 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   return valid;
 }
 
-Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks) {
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks,
+                                                          int dofsPerNode) {
   std::string type = settings.get<std::string>("Type");
   if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
   if (type == "auto") type = numRanks == 1 ? "Amesos2 KLU2" : "Belos GMRES + Ifpack2";
@@ -73,7 +74,7 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::Parame
     p->set("Preconditioner Type", "MueLu");
     auto& m = p->sublist("Preconditioner Types").sublist("MueLu");
     m.set("verbosity", "none");
-    m.set("number of equations", 1);
+    m.set("number of equations", dofsPerNode);  // nodal blocks for aggregation
     m.set("coarse: type", "RELAXATION");
     m.set("smoother: type", "RELAXATION");
     m.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
@@ -83,7 +84,7 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::Parame
 }
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const Teuchos::ParameterList& settings,
-                                                                          int numRanks) {
+                                                                          int numRanks, int dofsPerNode) {
   using namespace assembly;
   Stratimikos::DefaultLinearSolverBuilder builder;
   builder.setPreconditioningStrategyFactory(
@@ -91,7 +92,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const 
                                   Thyra::Ifpack2PreconditionerFactory<CrsMatrix>>(),
       "Ifpack2");
   Stratimikos::enableMueLu<LocalIndex, GlobalIndex, Node>(builder);
-  auto params = stratimikosParameters(settings, numRanks);
+  auto params = stratimikosParameters(settings, numRanks, dofsPerNode);
   try {
     builder.setParameterList(params);
   } catch (const std::exception& e) {

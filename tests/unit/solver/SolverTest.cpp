@@ -47,7 +47,8 @@ struct System {
     for (const auto& c : setup.conditions)
       dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
     model = Teuchos::rcp(new solver::ModelEvaluator(
-        assembler, dirichlet, solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"), comm->getSize())));
+        assembler, dirichlet, solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"), comm->getSize(),
+                                                     assembly::formulationDim(setup.formulation))));
   }
 };
 
@@ -158,7 +159,6 @@ TEST(Newton, ConvergesQuadraticallyOnLargeInhomogeneousDeformation) {
 }
 
 TEST(ModelEvaluator, JacobianMatchesFiniteDifferencesOfResidual) {
-  using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
   for (std::string form : kFormulations) {
     SCOPED_TRACE(form);
     auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Loaded Face=clamped", "Geometry/Block/Cells X=2",

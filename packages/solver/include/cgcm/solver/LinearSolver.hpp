@@ -18,10 +18,11 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters();
 
 /// The Stratimikos parameter list the settings stand for on `numRanks` ranks.
 /// Throws InputError for a direct solver on more than one rank.
-Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks);
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks,
+                                                          int dofsPerNode);
 
 /// Builds the solver factory from validated settings.
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const Teuchos::ParameterList& settings,
-                                                                          int numRanks);
+                                                                          int numRanks, int dofsPerNode);
 
 }  // namespace cgcm::solver

@@ -1,0 +1,126 @@
+// One Newton iteration of the bulk problem, timed in parts: residual
+// assembly, Jacobian assembly (residual + tangent + matrix fill), Dirichlet
+// rows, linear solve (set-up + solve). Prints one line per case.
+//
+//   bench_newton_iteration [3D NX NY NZ | axisymmetric NX NY] [SOLVER] [REPEATS]
+//   SOLVER: a "Solver/Linear Solver/Type" value (default: auto)
+#include <Teuchos_CommHelpers.hpp>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "cgcm/assembly/Assembler.hpp"
+#include "cgcm/assembly/Dirichlet.hpp"
+#include "cgcm/mesh/Generators.hpp"
+#include "cgcm/solver/LinearSolver.hpp"
+
+using namespace cgcm;
+using Clock = std::chrono::steady_clock;
+
+static double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+int main(int argc, char** argv) {
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  std::vector<std::string> a(argv + 1, argv + argc);
+  if (a.empty()) a = {"3D", "32", "32", "32"};
+  const bool threeD = a[0] == "3D";
+  std::size_t k = 1;
+  const int nx = std::stoi(a.at(k++)), ny = std::stoi(a.at(k++)), nz = threeD ? std::stoi(a.at(k++)) : 0;
+  const std::string solverType = k < a.size() ? a[k++] : "auto";
+  const int repeats = k < a.size() ? std::stoi(a[k++]) : 3;
+
+  auto mesh = std::make_shared<mesh::Mesh>();
+  assembly::Formulation form;
+  std::vector<std::pair<std::string, int>> fixed;
+  std::string loaded;
+  if (threeD) {
+    mesh::BoxSpec s;
+    s.nx = nx, s.ny = ny, s.nz = nz;
+    *mesh = mesh::box(s);
+    form = assembly::Formulation::ThreeD;
+    fixed = {{"xmin", 0}, {"ymin", 1}, {"zmin", 2}, {"zmax", 0}, {"zmax", 1}};
+    loaded = "zmax";
+  } else {
+    mesh::RectangleSpec s;
+    s.nx = nx, s.ny = ny;
+    *mesh = mesh::rectangle(s);
+    form = assembly::Formulation::Axisymmetric;
+    fixed = {{"left", 0}, {"bottom", 1}, {"top", 0}};
+    loaded = "top";
+  }
+  const int dim = assembly::formulationDim(form);
+  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *mesh, dim));
+  assembly::Assembler assembler(dofs, mesh, form, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
+  assembly::DirichletConditions bc(dofs);
+  for (const auto& [set, c] : fixed) bc.add(mesh->nodeSet(set), c, 0.0, 0.0);
+  bc.add(mesh->nodeSet(loaded), dim - 1, 0.0, 1.0);
+
+  Teuchos::ParameterList settings;
+  settings.set("Type", solverType);
+  settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
+  auto factory = solver::buildLinearSolver(settings, comm->getSize(), dim);
+
+  assembly::Vector u(dofs->ownedMap()), f(dofs->ownedMap()), du(dofs->ownedMap());
+  const double load = -0.05;
+  {
+    // first Newton iteration of a 5 % compression step, from a smooth guess
+    auto uv = u.getLocalViewHost(Tpetra::Access::ReadWrite);
+    const auto& map = *dofs->ownedMap();
+    for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+      const auto gid = map.getGlobalElement(LocalIndex(lid));
+      if (gid % dim == dim - 1) uv(lid, 0) = load * 0.9 * mesh->coord(LocalIndex(gid / dim), dim - 1);
+    }
+  }
+  bc.impose(load, u);
+  auto J = assembler.createMatrix();
+
+  double tRes = 1e30, tJac = 1e30, tBc = 1e30, tSolve = 1e30;
+  for (int r = 0; r < repeats; ++r) {
+    comm->barrier();
+    auto t = Clock::now();
+    assembler.evaluate(u, f, nullptr);
+    comm->barrier();
+    tRes = std::min(tRes, since(t));
+    t = Clock::now();
+    assembler.evaluate(u, f, J.get());
+    comm->barrier();
+    tJac = std::min(tJac, since(t));
+    t = Clock::now();
+    bc.applyToResidual(u, load, f);
+    bc.applyToJacobian(*J);
+    comm->barrier();
+    tBc = std::min(tBc, since(t));
+    t = Clock::now();
+    auto space = Thyra::createVectorSpace<Real>(dofs->ownedMap());
+    Teuchos::RCP<const Thyra::LinearOpBase<Real>> op = Thyra::tpetraLinearOp<Real, LocalIndex, GlobalIndex, assembly::Node>(
+        space, space, Teuchos::rcp_implicit_cast<assembly::Operator>(J));
+    auto lows = Thyra::linearOpWithSolve(*factory, op);
+    du.putScalar(0.0);
+    auto fT = Thyra::createConstVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(f), space);
+    auto duT = Thyra::createVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(du), space);
+    const auto status = lows->solve(Thyra::NOTRANS, *fT, duT.ptr());
+    comm->barrier();
+    tSolve = std::min(tSolve, since(t));
+    if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED && root) std::printf("  (linear solve unconverged)\n");
+  }
+  // residual of the linear solve, as a check that the numbers are for a real solve
+  assembly::Vector r(dofs->ownedMap());
+  J->apply(du, r);
+  r.update(-1.0, f, 1.0);
+  const double rel = r.norm2() / f.norm2();
+  const long long cells = mesh->numCells();
+  if (root)
+    std::printf("%-13s %7lld cells %9lld dofs  np=%d  residual %8.4f s  jacobian %8.4f s (%6.2f us/cell/rank)  "
+                "bc %7.4f s  solve[%s] %8.3f s  |J du - f|/|f| = %.1e\n",
+                assembly::formulationName(form), cells, (long long)dofs->ownedMap()->getGlobalNumElements(),
+                comm->getSize(), tRes, tJac, 1e6 * tJac * comm->getSize() / cells, tBc, solverType.c_str(), tSolve,
+                rel);
+  return 0;
+}
