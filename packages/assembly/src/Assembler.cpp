@@ -223,20 +223,122 @@ void Assembler::evaluate(const Vector& u, Vector& f, Matrix* J) {
       }
     }
   }
-  int globalFailures = 0;
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, failures, Teuchos::outArg(globalFailures));
+  double interactionSeconds = 0.0;
+  int dropped = 0;
+  if (interaction_) {
+    const auto ti = Clock::now();
+    dropped = assembleInteraction(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J);
+    interactionSeconds = secondsSince(ti);
+  }
+  int counts[2] = {failures, dropped}, globalCounts[2] = {0, 0};
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, 2, counts, globalCounts);
   if (J) Tpetra::endAssembly(*J);
   f.putScalar(0.0);
   f.doExport(*fOverlap_, *exporter_, Tpetra::ADD);
+  timings_.interaction += interactionSeconds;
   if (J) {
-    timings_.jacobian += secondsSince(t0);
+    timings_.jacobian += secondsSince(t0) - interactionSeconds;
     ++timings_.jacobianCalls;
   } else {
-    timings_.residual += secondsSince(t0);
+    timings_.residual += secondsSince(t0) - interactionSeconds;
     ++timings_.residualCalls;
   }
-  if (globalFailures > 0)
-    throw InvertedElementError(std::to_string(globalFailures) + " element(s) inverted (J <= 0)");
+  if (globalCounts[0] > 0)
+    throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0)");
+  if (globalCounts[1] > 0)
+    throw GraphOutdatedError(std::to_string(globalCounts[1]) +
+                             " interaction tangent entries fell outside the matrix graph");
+}
+
+void Assembler::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadius) {
+  if (!(searchRadius > interaction->cutoff()))
+    throw InputError("Interaction/Search Radius Factor: the graph search radius (" + std::to_string(searchRadius) +
+                     ") must exceed the interaction cutoff (" + std::to_string(interaction->cutoff()) + ")");
+  interaction_ = std::move(interaction);
+  searchRadius_ = searchRadius;
+  ownsFacet_.assign(interaction_->numBodies(), {});
+  const int rank = dofs_->comm()->getRank();
+  std::set<LocalIndex> nodes;
+  for (int b = 0; b < interaction_->numBodies(); ++b) {
+    const auto& surf = interaction_->surface(b);
+    if (surf.facetCells.size() != std::size_t(surf.numFacets()))
+      throw std::logic_error("surface without facet-to-cell map");
+    ownsFacet_[b].resize(surf.numFacets());
+    for (LocalIndex f = 0; f < surf.numFacets(); ++f)
+      ownsFacet_[b][f] = dofs_->cellOwner(surf.facetCells[f]) == rank;
+    nodes.insert(surf.facets.begin(), surf.facets.end());
+  }
+  std::vector<GlobalIndex> gids;
+  for (LocalIndex n : nodes)
+    for (int i = 0; i < dim_; ++i) gids.push_back(dofs_->dof(n, i));
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  surfaceMap_ = Teuchos::rcp(new Map(invalid, gids.data(), gids.size(), 0, dofs_->comm()));
+  surfaceImport_ = Teuchos::rcp(new Import(dofs_->ownedMap(), surfaceMap_));
+  uSurface_ = Teuchos::rcp(new Vector(surfaceMap_));
+  coords_ = mesh_->coords;
+}
+
+const std::vector<Real>& Assembler::surfaceCoordinates(const Vector& u) {
+  uSurface_->doImport(u, *surfaceImport_, Tpetra::INSERT);
+  auto v = uSurface_->getLocalViewHost(Tpetra::Access::ReadOnly);
+  const Map& map = *surfaceMap_;
+  for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+    const GlobalIndex gid = map.getGlobalElement(LocalIndex(lid));
+    coords_[gid] = mesh_->coords[gid] + v(lid, 0);  // dof gid = node * dim + i = coordinate index
+  }
+  return coords_;
+}
+
+int Assembler::assembleInteraction(const Vector& u, Vector::dual_view_type::t_dev fv, Matrix* J) {
+  const std::vector<Real>& x = surfaceCoordinates(u);
+  interaction_->updatePairs(x.data());
+  const Map& overlap = *dofs_->overlapMap();
+  LocalMatrix lclJ;
+  Teuchos::RCP<const Map> colMap;
+  if (J) {
+    lclJ = J->getLocalMatrixDevice();
+    colMap = J->getColMap();
+  }
+  const auto& pairs = interaction_->pairs();
+  int dropped = 0;
+  interaction::PairContribution c;
+  for (const auto& p : pairs) {
+    if (!ownsFacet_[p.body][p.facet]) continue;  // each pair is evaluated by exactly one rank
+    interaction_->evaluatePair(x.data(), p, c, J != nullptr);
+    LocalIndex rows[4], cols[8];
+    for (int a = 0; a < 2; ++a)
+      for (int i = 0; i < 2; ++i) rows[2 * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));
+    for (int r = 0; r < 4; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
+    if (!J) continue;
+    for (int b = 0; b < 4; ++b)
+      for (int j = 0; j < 2; ++j) cols[2 * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
+    for (int r = 0; r < 4; ++r) {
+      lclJ.sumIntoValues(rows[r], cols, 8, c.K[r], false, true);
+      for (int k = 0; k < 8; ++k)
+        if (cols[k] == Teuchos::OrdinalTraits<LocalIndex>::invalid() && c.K[r][k] != 0.0) ++dropped;
+    }
+  }
+  return dropped;
+}
+
+bool Assembler::updateInteractionGraph(const Vector& u, bool keepExisting, Real radiusFactor) {
+  if (!interaction_) return false;
+  const std::vector<Real>& x = surfaceCoordinates(u);
+  const Map& overlap = *dofs_->overlapMap();
+  std::vector<std::pair<LocalIndex, LocalIndex>> wanted;
+  for (const auto& rc : interaction_->couplings(x.data(), searchRadius_ * radiusFactor))
+    if (overlap.getLocalElement(dofs_->dof(rc.first, 0)) != Teuchos::OrdinalTraits<LocalIndex>::invalid())
+      wanted.push_back(rc);
+  const int missing = std::includes(extraCouplings_.begin(), extraCouplings_.end(), wanted.begin(), wanted.end())
+                          ? 0 : 1;
+  int anyMissing = 0;
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, missing, Teuchos::outArg(anyMissing));
+  if (!anyMissing && !graph_.is_null()) return false;
+  if (keepExisting) wanted.insert(wanted.end(), extraCouplings_.begin(), extraCouplings_.end());
+  extraCouplings_.clear();
+  setExtraCouplings(std::move(wanted));
+  graph();
+  return true;
 }
 
 Real Assembler::sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const {

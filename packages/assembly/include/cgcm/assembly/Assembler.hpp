@@ -13,6 +13,8 @@
 #include <Kokkos_Core.hpp>
 
 #include "cgcm/assembly/DofMap.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/SurfaceInteraction.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 
@@ -28,8 +30,16 @@ int formulationDim(Formulation f);
 struct AssemblyTimings {
   double residual = 0.0;     ///< residual-only evaluations of the bulk
   double jacobian = 0.0;     ///< residual + tangent evaluations of the bulk (incl. fill)
+  double interaction = 0.0;  ///< interaction: coordinate gather, search, kernel, scatter
   int residualCalls = 0;
   int jacobianCalls = 0;
+};
+
+/// An interaction tangent entry fell outside the matrix graph (the set of
+/// interacting surface elements moved beyond the graph's search radius). The
+/// Jacobian is incomplete: rebuild the graph and redo the step.
+struct GraphOutdatedError : NumericalError {
+  using NumericalError::NumericalError;
 };
 
 class Assembler {
@@ -59,6 +69,20 @@ class Assembler {
   /// Current nodal coordinates x = X + u of every overlap node, as imported for the last evaluate().
   const Vector& overlapDisplacement() const { return *uOverlap_; }
 
+  /// Adds the surface interaction (Method 3) to every evaluation. The matrix
+  /// graph holds the couplings of all surface elements within `searchRadius`
+  /// (> the interaction cutoff) of each other, refreshed by updateInteractionGraph.
+  void setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadius);
+  const interaction::SurfaceInteraction* interaction() const { return interaction_.get(); }
+  /// Refreshes the interaction couplings from the state u: if some are missing
+  /// from the graph, the graph is rebuilt (with the old couplings kept when
+  /// `keepExisting`) and true is returned on every rank. `radiusFactor` scales
+  /// the search radius. Collective.
+  bool updateInteractionGraph(const Vector& u, bool keepExisting = false, Real radiusFactor = 1.0);
+  /// Current coordinates (X + u) of every surface node of every body, as a
+  /// mesh-wide array (dim entries per node; other nodes hold X). Collective.
+  const std::vector<Real>& surfaceCoordinates(const Vector& u);
+
   const AssemblyTimings& timings() const { return timings_; }
 
   /// Sum of component `component` of the owned entries of `f` over a node set (collective).
@@ -67,6 +91,7 @@ class Assembler {
  private:
   void buildGraph();
   void cacheColumnIndices(const Matrix& J);
+  int assembleInteraction(const Vector& u, Vector::dual_view_type::t_dev f, Matrix* J);
 
   Teuchos::RCP<const DofMap> dofs_;
   std::shared_ptr<const mesh::Mesh> mesh_;
@@ -88,6 +113,15 @@ class Assembler {
   Teuchos::RCP<Graph> graph_;
   int graphVersion_ = 0;
   int colLidsVersion_ = -1;
+
+  std::shared_ptr<interaction::SurfaceInteraction> interaction_;
+  Real searchRadius_ = 0.0;
+  std::vector<std::vector<char>> ownsFacet_;  ///< [body][facet]: this rank evaluates it
+  Teuchos::RCP<const Map> surfaceMap_;        ///< every surface dof, on every rank
+  Teuchos::RCP<const Import> surfaceImport_;
+  Teuchos::RCP<Vector> uSurface_;
+  std::vector<Real> coords_;                  ///< mesh-wide current coordinates of surface nodes
+  std::vector<interaction::PairContribution> pairScratch_;
 
   Teuchos::RCP<Vector> uOverlap_, fOverlap_;
   Teuchos::RCP<const Export> exporter_;

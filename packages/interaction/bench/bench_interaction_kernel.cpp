@@ -1,0 +1,193 @@
+// Cost per interaction pair of the Method 3 kernel (prints; not a test).
+//
+//   bench_interaction_kernel [segments per body = 4000] [repetitions = 20]
+//
+// Geometry: axisymmetric sphere (R = 100 r0) at h0 = r_S0 above a flat, LJ
+// potential, cutoff 10 r0, 4 Gauss points per segment. Reports the search
+// (pair list), the evaluation with and without tangent through the driver,
+// the bare kernel, and the same tangent by forward AD (Sacado) for scale.
+#include <Sacado.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "cgcm/interaction/SurfaceInteraction.hpp"
+
+using namespace cgcm;
+using namespace cgcm::interaction;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+template <class Curve>
+mesh::Surface polyline(std::vector<Real>& coords, int n, Curve&& curve, int body) {
+  mesh::Surface s;
+  s.body = body;
+  const LocalIndex first = LocalIndex(coords.size() / 2);
+  for (int i = 0; i <= n; ++i) {
+    Real x, y;
+    curve(Real(i) / n, x, y);
+    coords.push_back(x);
+    coords.push_back(y);
+  }
+  for (int i = 0; i < n; ++i) {
+    s.facets.push_back(first + i);
+    s.facets.push_back(first + i + 1);
+  }
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int n = argc > 1 ? std::atoi(argv[1]) : 4000;
+  const int reps = argc > 2 ? std::atoi(argv[2]) : 20;
+  const Real pi = std::acos(-1.0);
+  const Real R = 100.0, r0 = 1.0;
+  auto lj = std::make_shared<LennardJones>(1.0, r0);
+  const Real h0 = *lj->surfaceEquilibriumDistance();
+  const Real rhoMax = std::sqrt(2.0 * R * 15.0);
+
+  std::vector<Real> coords;
+  std::vector<mesh::Surface> surfaces;
+  surfaces.push_back(polyline(
+      coords, n,
+      [&](Real t, Real& x, Real& y) {
+        x = 1.1 * rhoMax * (1 - t);
+        y = 0.0;
+      },
+      0));
+  const Real alpha = std::asin(rhoMax / R);
+  surfaces.push_back(polyline(
+      coords, n,
+      [&](Real t, Real& x, Real& y) {
+        const Real th = -pi / 2 + alpha * t;
+        x = R * std::cos(th);
+        y = R + h0 + R * std::sin(th);
+      },
+      1));
+  SurfaceInteractionOptions opt;
+  opt.formulation = Formulation::Axisymmetric;
+  SurfaceInteraction si(surfaces, {1.0, 1.0}, lj, opt);
+
+  std::vector<PairContribution> out;
+  si.updatePairs(coords);
+  si.evaluate(coords, out);  // warm-up
+  const auto t0 = Clock::now();
+  for (int r = 0; r < reps; ++r) si.updatePairs(coords);
+  const auto t1 = Clock::now();
+  for (int r = 0; r < reps; ++r) si.evaluate(coords, out, true);
+  const auto t2 = Clock::now();
+  for (int r = 0; r < reps; ++r) si.evaluate(coords, out, false);
+  const auto t3 = Clock::now();
+  // scatter form: f and K consumed at once (here summed), no stored array
+  std::vector<Real> fglob(coords.size(), 0.0);
+  Real ksum = 0.0;
+  for (int r = 0; r < reps; ++r)
+    si.evaluate(coords.data(), [&](const PairContribution& c) {
+      for (int a = 0; a < 2; ++a)
+        for (int i = 0; i < 2; ++i) fglob[2 * c.rowNodes[a] + i] += c.f[2 * a + i];
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 8; ++j) ksum += c.K[i][j];
+    });
+  const auto t3b = Clock::now();
+  const double np = double(si.summary().numPairs);
+
+  // bare kernel on the stored pairs' coordinates
+  std::vector<Real> z(8 * si.pairs().size());
+  for (std::size_t i = 0; i < si.pairs().size(); ++i)
+    for (int a = 0; a < 4; ++a)
+      for (int k = 0; k < 2; ++k) z[8 * i + 2 * a + k] = coords[2 * out[i].colNodes[a] + k];
+  const SurfaceInteraction::Law law{lj.get(), 1.0};
+  const GaussRule& rule = si.quadrature();
+  Real sink = 0.0;
+  const auto t4 = Clock::now();
+  for (int r = 0; r < reps; ++r)
+    for (std::size_t i = 0; i < si.pairs().size(); ++i) {
+      Real f[4], K[4][8];
+      const int q = si.pairs()[i].qp;
+      method3Pair<Formulation::Axisymmetric>(&z[8 * i], rule.points[q], rule.weights[q], law, f, K);
+      for (int a = 0; a < 4; ++a) {
+        sink += f[a];
+        for (int j = 0; j < 8; ++j) sink += K[a][j];
+      }
+    }
+  const auto t5 = Clock::now();
+  using Fad = Sacado::Fad::SFad<Real, 8>;
+  const Real C = pi * lj->epsilon() * r0 * r0 * r0;
+  auto traction = [&](const Fad& r) {
+    const Fad s = r0 / r;
+    const Fad s3 = s * s * s;
+    return Fad(C * (s3 * s3 * s3 / 45.0 - s3 / 3.0));
+  };
+  for (int r = 0; r < reps; ++r)
+    for (std::size_t i = 0; i < si.pairs().size(); ++i) {
+      Fad zf[8], ff[4];
+      for (int j = 0; j < 8; ++j) zf[j] = Fad(8, j, z[8 * i + j]);
+      const int q = si.pairs()[i].qp;
+      method3PairResidualGeneric<Formulation::Axisymmetric>(zf, rule.points[q], rule.weights[q], traction,
+                                                            ff);
+      for (int a = 0; a < 4; ++a) {
+        sink += ff[a].val();
+        for (int j = 0; j < 8; ++j) sink += ff[a].dx(j);
+      }
+    }
+  const auto t6 = Clock::now();
+
+  // the two 2D searches on the sphere's surface, queried from the flat's points
+  std::vector<Real> qpts;
+  for (LocalIndex e = 0; e < surfaces[0].numFacets(); ++e)
+    for (int q = 0; q < rule.size(); ++q) {
+      const Real xi = rule.points[q];
+      const LocalIndex a = surfaces[0].facets[2 * e], b = surfaces[0].facets[2 * e + 1];
+      qpts.push_back((1 - xi) * coords[2 * a] + xi * coords[2 * b]);
+      qpts.push_back((1 - xi) * coords[2 * a + 1] + xi * coords[2 * b + 1]);
+    }
+  SegmentTreeSearch2D tree;
+  SegmentSearch2D bins;
+  double searchCost[2], buildCost[2];
+  ClosestPointSearch* impl[2] = {&tree, &bins};
+  for (int k = 0; k < 2; ++k) {
+    const auto a = Clock::now();
+    for (int r = 0; r < reps; ++r) impl[k]->build(coords, surfaces[1]);
+    const auto b = Clock::now();
+    for (int r = 0; r < reps; ++r)
+      for (std::size_t i = 0; i < qpts.size() / 2; ++i)
+        sink += impl[k]->project(&qpts[2 * i], si.cutoff()).found() ? 1.0 : 0.0;
+    const auto c = Clock::now();
+    buildCost[k] = 1e3 * seconds(a, b) / reps;
+    searchCost[k] = 1e9 * seconds(b, c) / reps / (qpts.size() / 2);
+  }
+
+  const InteractionSummary& s = si.summary();
+  std::printf(
+      "bench_interaction_kernel: axisymmetric sphere R = %.0f r0 at h0 = r_S0 above a flat, %d segments per "
+      "body\n",
+      R, n);
+  std::printf(
+      "  quadrature points searched %d, pairs %d, beyond cutoff %d (cutoff %.1f r0, |T(r_c)| = %.2e)\n",
+      int(s.numQuadraturePoints), int(s.numPairs), int(s.numBeyondCutoff), s.cutoff / r0, s.cutoffTraction);
+  std::printf("  search (pair list)            %8.1f ns per quadrature point (%.2f ms per update)\n",
+              1e9 * seconds(t0, t1) / reps / s.numQuadraturePoints, 1e3 * seconds(t0, t1) / reps);
+  std::printf(
+      "  flat points onto the sphere: AABB tree %.1f ns per query (build %.3f ms), bins %.1f ns (build %.3f "
+      "ms)\n",
+      searchCost[0], buildCost[0], searchCost[1], buildCost[1]);
+  std::printf("  driver f + K                  %8.1f ns per pair (%.2f ms per evaluation)\n",
+              1e9 * seconds(t1, t2) / reps / np, 1e3 * seconds(t1, t2) / reps);
+  std::printf("  driver f + K, scatter callback%8.1f ns per pair\n", 1e9 * seconds(t3, t3b) / reps / np);
+  std::printf("  driver f only                 %8.1f ns per pair\n", 1e9 * seconds(t2, t3) / reps / np);
+  std::printf("  bare kernel f + K (hand)      %8.1f ns per pair\n", 1e9 * seconds(t4, t5) / reps / np);
+  std::printf("  bare kernel f + K (Sacado AD) %8.1f ns per pair\n", 1e9 * seconds(t5, t6) / reps / np);
+  std::printf("  resultants: sphere %.4f, flat %.4f (-2 pi w R = %.4f)\n", s.resultant[1][1], s.resultant[0][1],
+              -2 * pi * lj->workOfAdhesion(1, 1) * R);
+  volatile Real keep = sink + ksum;  // keeps the timed loops from being optimised away
+  (void)keep;
+  return 0;
+}

@@ -1,0 +1,215 @@
+#include "cgcm/interaction/PairPotential.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/Quadrature.hpp"
+
+namespace cgcm::interaction {
+
+namespace {
+const Real kPi = std::acos(-1.0);
+}
+
+PairPotential::PairPotential(Real epsilon, Real r0) : epsilon_(epsilon), r0_(r0) {
+  if (!(epsilon > 0.0) || !std::isfinite(epsilon)) {
+    std::ostringstream os;
+    os << "pair potential: epsilon must be finite and > 0, got " << epsilon;
+    throw InputError(os.str());
+  }
+  if (!(r0 > 0.0) || !std::isfinite(r0)) {
+    std::ostringstream os;
+    os << "pair potential: r0 must be finite and > 0, got " << r0;
+    throw InputError(os.str());
+  }
+}
+
+void PairPotential::halfSpaceWithDerivative(Real r, Real& value, Real& derivative) const {
+  value = halfSpace(r);
+  derivative = dHalfSpace(r);
+}
+
+// ---------------------------------------------------------------------------
+// Numerical defaults. They scan r over [1e-3 r0, 1e3 r0] on a logarithmic
+// grid; a potential whose features lie outside this range overrides them.
+
+std::optional<Real> PairPotential::surfaceEquilibriumDistance() const {
+  const int n = 3000;
+  const Real lo = 1e-3 * r0_, hi = 1e3 * r0_;
+  const Real ratio = std::pow(hi / lo, 1.0 / n);
+  // outermost sign change, scanning inwards from large r
+  Real rOut = hi, fOut = halfSpace(hi);
+  for (int i = n - 1; i >= 0; --i) {
+    const Real rIn = lo * std::pow(ratio, i);
+    const Real fIn = halfSpace(rIn);
+    if ((fIn > 0.0) != (fOut > 0.0) && fIn != 0.0 && fOut != 0.0) {
+      Real a = rIn, b = rOut, fa = fIn;
+      for (int it = 0; it < 200 && (b - a) > 1e-15 * b; ++it) {
+        const Real m = 0.5 * (a + b);
+        const Real fm = halfSpace(m);
+        if ((fm > 0.0) == (fa > 0.0)) {
+          a = m;
+          fa = fm;
+        } else {
+          b = m;
+        }
+      }
+      return 0.5 * (a + b);
+    }
+    if (fIn == 0.0) return rIn;
+    rOut = rIn;
+    fOut = fIn;
+  }
+  return std::nullopt;
+}
+
+Real PairPotential::adhesionWorkCoefficient() const {
+  const auto rs = surfaceEquilibriumDistance();
+  if (!rs) return 0.0;
+  // r = rs / u maps u in (0, 1] onto [rs, inf); dr = rs / u^2 du.
+  const Real a = *rs;
+  const GaussRule rule = gaussLegendreUnit(8);
+  const Real integral =
+      integrate([&](Real u) { return halfSpace(a / u) * a / (u * u); }, 0.0, 1.0, 400, rule);
+  return -integral;
+}
+
+Real PairPotential::peakTractionCoefficient() const {
+  const int n = 3000;
+  const Real lo = 1e-3 * r0_, hi = 1e3 * r0_;
+  const Real ratio = std::pow(hi / lo, 1.0 / n);
+  int best = -1;
+  Real bestValue = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const Real v = -halfSpace(lo * std::pow(ratio, i));
+    if (v > bestValue) {
+      bestValue = v;
+      best = i;
+    }
+  }
+  if (best < 0) return 0.0;
+  // golden-section refinement between the neighbouring samples
+  Real a = lo * std::pow(ratio, std::max(best - 1, 0));
+  Real b = lo * std::pow(ratio, std::min(best + 1, n));
+  const Real g = 0.5 * (std::sqrt(5.0) - 1.0);
+  Real c = b - g * (b - a), d = a + g * (b - a);
+  Real fc = -halfSpace(c), fd = -halfSpace(d);
+  for (int it = 0; it < 200 && (b - a) > 1e-14 * b; ++it) {
+    if (fc > fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - g * (b - a);
+      fc = -halfSpace(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + g * (b - a);
+      fd = -halfSpace(d);
+    }
+  }
+  return std::max({bestValue, fc, fd});
+}
+
+// ---------------------------------------------------------------------------
+// Lennard-Jones 12-6
+
+Real LennardJones::phi(Real r) const {
+  const Real q = r0() / r;
+  const Real q6 = q * q * q * q * q * q;
+  return epsilon() * (q6 * q6 - 2.0 * q6);
+}
+
+Real LennardJones::dphi(Real r) const {
+  const Real q = r0() / r;
+  const Real q6 = q * q * q * q * q * q;
+  return -12.0 * epsilon() * (q6 * q6 - q6) / r;
+}
+
+Real LennardJones::halfSpace(Real r) const {
+  const Real q = r0() / r;
+  const Real q3 = q * q * q;
+  const Real c = kPi * epsilon() * r0() * r0() * r0();
+  return c * (q3 * q3 * q3 / 45.0 - q3 / 3.0);
+}
+
+Real LennardJones::dHalfSpace(Real r) const {
+  const Real q = r0() / r;
+  const Real q3 = q * q * q;
+  const Real c = kPi * epsilon() * r0() * r0() * r0();
+  return c * (q3 - q3 * q3 * q3 / 5.0) / r;
+}
+
+void LennardJones::halfSpaceWithDerivative(Real r, Real& value, Real& derivative) const {
+  const Real q = r0() / r;
+  const Real q3 = q * q * q;
+  const Real q9 = q3 * q3 * q3;
+  const Real c = kPi * epsilon() * r0() * r0() * r0();
+  value = c * (q9 / 45.0 - q3 / 3.0);
+  derivative = c * (q3 - q9 / 5.0) / r;
+}
+
+std::optional<Real> LennardJones::surfaceEquilibriumDistance() const {
+  return r0() / std::pow(15.0, 1.0 / 6.0);
+}
+
+Real LennardJones::workFactor() { return kPi / 8.0 * std::cbrt(15.0); }
+
+Real LennardJones::peakTractionFactor() { return 2.0 * std::sqrt(5.0) / 9.0 * kPi; }
+
+Real LennardJones::adhesionWorkCoefficient() const {
+  const Real r0v = r0();
+  return workFactor() * epsilon() * r0v * r0v * r0v * r0v;
+}
+
+Real LennardJones::peakTractionCoefficient() const {
+  const Real r0v = r0();
+  return peakTractionFactor() * epsilon() * r0v * r0v * r0v;
+}
+
+// ---------------------------------------------------------------------------
+// Repulsive-only
+
+Real RepulsiveLennardJones::phi(Real r) const {
+  const Real q = r0() / r;
+  const Real q6 = q * q * q * q * q * q;
+  return epsilon() * q6 * q6;
+}
+
+Real RepulsiveLennardJones::dphi(Real r) const {
+  const Real q = r0() / r;
+  const Real q6 = q * q * q * q * q * q;
+  return -12.0 * epsilon() * q6 * q6 / r;
+}
+
+Real RepulsiveLennardJones::halfSpace(Real r) const {
+  const Real q = r0() / r;
+  const Real q3 = q * q * q;
+  return kPi * epsilon() * r0() * r0() * r0() * q3 * q3 * q3 / 45.0;
+}
+
+Real RepulsiveLennardJones::dHalfSpace(Real r) const {
+  const Real q = r0() / r;
+  const Real q3 = q * q * q;
+  return -kPi * epsilon() * r0() * r0() * r0() * q3 * q3 * q3 / (5.0 * r);
+}
+
+void RepulsiveLennardJones::halfSpaceWithDerivative(Real r, Real& value, Real& derivative) const {
+  const Real q = r0() / r;
+  const Real q3 = q * q * q;
+  value = kPi * epsilon() * r0() * r0() * r0() * q3 * q3 * q3 / 45.0;
+  derivative = -9.0 * value / r;
+}
+
+// ---------------------------------------------------------------------------
+
+std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0) {
+  if (name == "lennard-jones" || name == "lj") return std::make_shared<LennardJones>(epsilon, r0);
+  if (name == "repulsive") return std::make_shared<RepulsiveLennardJones>(epsilon, r0);
+  throw InputError("pair potential: unknown name '" + name + "' (allowed: lennard-jones, lj, repulsive)");
+}
+
+}  // namespace cgcm::interaction

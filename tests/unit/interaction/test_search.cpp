@@ -1,0 +1,272 @@
+// Closest-point search: binned SegmentSearch2D against brute force.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "InteractionTestUtil.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/ClosestPointSearch.hpp"
+
+using namespace cgcm;
+using namespace cgcm::interaction;
+using namespace cgcm::interaction::testing;
+
+namespace {
+
+// A wavy, non-uniformly sampled open curve with convex and concave corners.
+std::vector<Real> wavyCurve(int n) {
+  return samplePolyline(
+      [](Real s, Real& x, Real& y) {
+        const Real u = s * s * (3.0 - 2.0 * s);  // graded: finer at both ends
+        x = 4.0 * u;
+        y = 0.3 * std::sin(3.0 * x) + 0.1 * x * x;
+      },
+      n);
+}
+
+std::vector<Real> circle(int n, Real R) {
+  std::vector<Real> p;
+  for (int i = 0; i <= n; ++i) {
+    const Real t = 2.0 * kPi * i / n;
+    p.push_back(R * std::cos(t));
+    p.push_back(R * std::sin(t));
+  }
+  return p;
+}
+
+// Same facet, or an exact tie; same distance and point (tolerance 1e-13 absolute, O(1) geometry).
+void expectSameProjection(const Projection& a, const Projection& b, const Real* x) {
+  ASSERT_EQ(a.found(), b.found()) << "x = (" << x[0] << ", " << x[1] << ")";
+  if (!a.found()) return;
+  EXPECT_EQ(a.facet, b.facet) << "x = (" << x[0] << ", " << x[1] << ")";
+  EXPECT_NEAR(a.distance, b.distance, 1e-13);
+  EXPECT_NEAR(a.point[0], b.point[0], 1e-13);
+  EXPECT_NEAR(a.point[1], b.point[1], 1e-13);
+  EXPECT_NEAR(a.xi[0], b.xi[0], 1e-13);
+}
+
+// The accelerated implementations under test.
+std::vector<std::unique_ptr<ClosestPointSearch>> accelerated() {
+  std::vector<std::unique_ptr<ClosestPointSearch>> v;
+  v.push_back(std::make_unique<SegmentTreeSearch2D>());
+  v.push_back(std::make_unique<SegmentSearch2D>());
+  return v;
+}
+
+}  // namespace
+
+TEST(SegmentProjection, ClampsToVertices) {
+  const Real a[2] = {0.0, 0.0}, b[2] = {2.0, 0.0};
+  Real xi, p[2];
+  int region;
+  const Real x1[2] = {0.5, 1.0};
+  EXPECT_DOUBLE_EQ(projectOntoSegment(x1, a, b, xi, p, region), 1.0);
+  EXPECT_EQ(region, 0);
+  EXPECT_DOUBLE_EQ(xi, 0.25);
+  const Real x2[2] = {-3.0, 4.0};
+  EXPECT_DOUBLE_EQ(projectOntoSegment(x2, a, b, xi, p, region), 25.0);
+  EXPECT_EQ(region, 1);
+  EXPECT_EQ(xi, 0.0);
+  const Real x3[2] = {5.0, -4.0};
+  EXPECT_DOUBLE_EQ(projectOntoSegment(x3, a, b, xi, p, region), 25.0);
+  EXPECT_EQ(region, 2);
+  EXPECT_EQ(p[0], 2.0);
+  // degenerate segment: the vertex
+  EXPECT_DOUBLE_EQ(projectOntoSegment(x1, a, a, xi, p, region), 1.25);
+  EXPECT_EQ(region, 1);
+}
+
+TEST(ClosestPointSearch, MatchesBruteForceOnCurvedPolyline) {
+  std::vector<Real> coords;
+  const mesh::Surface surf = addPolyline(coords, wavyCurve(300), 1);
+  BruteForceSegmentSearch2D brute;
+  brute.build(coords, surf);
+  SegmentSearch2D bins;
+  bins.build(coords, surf);
+  EXPECT_LE(std::size_t(bins.binsX()) * bins.binsY(), std::size_t(4 * 300 + 64));
+  for (auto& search : accelerated()) {
+    ClosestPointSearch& grid = *search;
+    grid.build(coords, surf);
+    ASSERT_EQ(grid.numFacets(), 300);
+
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<Real> ux(-1.5, 5.5), uy(-1.5, 3.5);
+    int vertexCases = 0, interiorCases = 0;
+    const Real inf = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < 20000; ++i) {
+      const Real x[2] = {ux(rng), uy(rng)};
+      const Projection pb = brute.project(x, inf);
+      expectSameProjection(grid.project(x, inf), pb, x);
+      ASSERT_TRUE(pb.found());
+      if (pb.xi[0] == 0.0 || pb.xi[0] == 1.0)
+        ++vertexCases;
+      else
+        ++interiorCases;
+    }
+    // both kinds of projection are exercised (end vertices and convex corners)
+    EXPECT_GT(vertexCases, 500);
+    EXPECT_GT(interiorCases, 5000);
+  }
+}
+
+TEST(ClosestPointSearch, PointsNearTheCurveIncludingCornerRegions) {
+  // points at distance < 0.05 from the nodes: vertex regions of convex corners
+  std::vector<Real> coords;
+  const std::vector<Real> pts = wavyCurve(120);
+  const mesh::Surface surf = addPolyline(coords, pts, 0);
+  for (auto& search : accelerated()) {
+    ClosestPointSearch& grid = *search;
+    BruteForceSegmentSearch2D brute;
+    grid.build(coords, surf);
+    brute.build(coords, surf);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<Real> u(-0.05, 0.05);
+    const Real inf = std::numeric_limits<Real>::infinity();
+    int vertexCases = 0;
+    for (int node = 0; node <= 120; ++node)
+      for (int k = 0; k < 40; ++k) {
+        const Real x[2] = {pts[2 * node] + u(rng), pts[2 * node + 1] + u(rng)};
+        const Projection pb = brute.project(x, inf);
+        expectSameProjection(grid.project(x, inf), pb, x);
+        if (pb.xi[0] == 0.0 || pb.xi[0] == 1.0) ++vertexCases;
+      }
+    EXPECT_GT(vertexCases, 100);
+  }
+}
+
+TEST(ClosestPointSearch, CutoffPrunesOnlyFartherPoints) {
+  std::vector<Real> coords;
+  const mesh::Surface surf = addPolyline(coords, circle(1000, 2.0), 0);
+  SegmentSearch2D bins;
+  bins.build(coords, surf);
+  EXPECT_LE(std::size_t(bins.binsX()) * bins.binsY(), std::size_t(4 * 1000 + 64));
+  for (auto& search : accelerated()) {
+    ClosestPointSearch& grid = *search;
+    BruteForceSegmentSearch2D brute;
+    grid.build(coords, surf);
+    brute.build(coords, surf);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<Real> u(-12.0, 12.0);
+    const Real inf = std::numeric_limits<Real>::infinity();
+    int pruned = 0, kept = 0;
+    for (Real cutoff : {0.05, 0.5, 3.0}) {
+      for (int i = 0; i < 5000; ++i) {
+        const Real x[2] = {u(rng), u(rng)};
+        const Projection full = brute.project(x, inf);
+        const Projection pg = grid.project(x, cutoff);
+        expectSameProjection(pg, brute.project(x, cutoff), x);
+        // found exactly when the true distance is within the cutoff
+        EXPECT_EQ(pg.found(), full.distance <= cutoff);
+        if (pg.found()) {
+          EXPECT_EQ(pg.facet, full.facet);
+          ++kept;
+        } else {
+          ++pruned;
+        }
+      }
+    }
+    EXPECT_GT(pruned, 1000);
+    EXPECT_GT(kept, 500);
+    // far outside the grid box
+    const Real far[2] = {100.0, -50.0};
+    EXPECT_FALSE(grid.project(far, 10.0).found());
+    expectSameProjection(grid.project(far, inf), brute.project(far, inf), far);
+  }
+}
+
+TEST(ClosestPointSearch, FacetsNearMatchesBruteForceAndCoversTrueNeighbours) {
+  std::vector<Real> coords;
+  const mesh::Surface surf = addPolyline(coords, wavyCurve(200), 0);
+  for (auto& search : accelerated()) {
+    ClosestPointSearch& grid = *search;
+    BruteForceSegmentSearch2D brute;
+    grid.build(coords, surf);
+    brute.build(coords, surf);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<Real> u(-1.0, 5.0), w(0.0, 0.3);
+    for (int i = 0; i < 500; ++i) {
+      const Real lo[2] = {u(rng), u(rng) - 1.0};
+      const Real hi[2] = {lo[0] + w(rng), lo[1] + w(rng)};
+      const Real radius = 0.4;
+      std::vector<LocalIndex> a, b;
+      grid.facetsNear(lo, hi, radius, a);
+      brute.facetsNear(lo, hi, radius, b);
+      ASSERT_EQ(a, b);
+      // every facet within `radius` of the box corner lo is listed
+      for (LocalIndex e = 0; e < grid.numFacets(); ++e) {
+        Real xi, p[2];
+        int region;
+        const Real d2 = projectOntoSegment(lo, &coords[2 * e], &coords[2 * e + 2], xi, p, region);
+        if (d2 <= radius * radius) {
+          EXPECT_TRUE(std::binary_search(a.begin(), a.end(), e));
+        }
+      }
+    }
+  }
+}
+
+TEST(ClosestPointSearch, EmptySurfaceAndInvalidInput) {
+  std::vector<Real> coords = {0.0, 0.0};
+  mesh::Surface empty;
+  mesh::Surface tri;
+  tri.nodesPerFacet = 3;
+  tri.facets = {0, 0, 0};
+  const Real x[2] = {1.0, 1.0};
+  for (auto& search : accelerated()) {
+    search->build(coords, empty);
+    EXPECT_EQ(search->numFacets(), 0);
+    EXPECT_FALSE(search->project(x, std::numeric_limits<Real>::infinity()).found());
+    std::vector<LocalIndex> near;
+    search->facetsNear(x, x, 1.0, near);
+    EXPECT_TRUE(near.empty());
+    EXPECT_THROW(search->build(coords, tri), InputError);
+  }
+  EXPECT_THROW(makeClosestPointSearch(3), InputError);
+  EXPECT_NE(makeClosestPointSearch(2), nullptr);
+}
+
+TEST(ClosestPointSearch, TimingAgainstBruteForce) {
+  // Not a timed test: prints the cost per query for 10^4 segments, for
+  // points near the surface and for points up to 10 cutoffs away.
+  std::vector<Real> coords;
+  const mesh::Surface surf = addPolyline(coords, circle(10000, 1.0), 0);
+  SegmentTreeSearch2D tree;
+  SegmentSearch2D bins;
+  BruteForceSegmentSearch2D brute;
+  auto us = [](auto a, auto b) { return std::chrono::duration<double, std::micro>(b - a).count(); };
+  auto t0 = std::chrono::steady_clock::now();
+  tree.build(coords, surf);
+  auto t1 = std::chrono::steady_clock::now();
+  bins.build(coords, surf);
+  auto t2 = std::chrono::steady_clock::now();
+  brute.build(coords, surf);
+  std::printf("[search] 1e4 segments: build tree %.0f us, bins %.0f us\n", us(t0, t1), us(t1, t2));
+  const Real cutoff = 0.05;
+  for (Real spread : {0.02, 0.5}) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<Real> u(0.0, 2.0 * kPi), d(1.0 - spread, 1.0 + spread);
+    std::vector<Real> q;
+    for (int i = 0; i < 4000; ++i) {
+      const Real t = u(rng), r = d(rng);
+      q.push_back(r * std::cos(t));
+      q.push_back(r * std::sin(t));
+    }
+    const ClosestPointSearch* impl[3] = {&tree, &bins, &brute};
+    double cost[3];
+    LocalIndex sum[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      auto a = std::chrono::steady_clock::now();
+      for (int i = 0; i < 4000; ++i) sum[k] += impl[k]->project(&q[2 * i], cutoff).facet;
+      cost[k] = us(a, std::chrono::steady_clock::now()) / 4000;
+    }
+    EXPECT_EQ(sum[0], sum[2]);
+    EXPECT_EQ(sum[1], sum[2]);
+    std::printf(
+        "[search] points within %.2f of the circle, cutoff %.2f: tree %.3f us, bins %.3f us, "
+        "brute force %.2f us per query\n",
+        spread, cutoff, cost[0], cost[1], cost[2]);
+  }
+}

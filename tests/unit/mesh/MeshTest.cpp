@@ -1,0 +1,169 @@
+// Mesh generators: positive cells, closed outward-oriented surfaces (checked
+// with the divergence theorem), node sets where they belong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/mesh/Benchmark.hpp"
+#include "cgcm/mesh/Generators.hpp"
+
+namespace cgcm::mesh {
+namespace {
+
+// Signed measure (area in 2D, volume in 3D) of all cells, and the smallest cell measure.
+std::pair<double, double> cellMeasures(const Mesh& m) {
+  double total = 0.0, smallest = 1e300;
+  for (const auto& b : m.blocks) {
+    const int n = nodesPerCell(b.type);
+    for (LocalIndex c = 0; c < b.numCells(); ++c) {
+      const LocalIndex* q = &b.connectivity[std::size_t(c) * n];
+      double v = 0.0;
+      if (b.type == CellType::Quad4) {
+        for (int k = 0; k < 4; ++k)
+          v += 0.5 * (m.coord(q[k], 0) * m.coord(q[(k + 1) % 4], 1) - m.coord(q[(k + 1) % 4], 0) * m.coord(q[k], 1));
+      } else if (b.type == CellType::Tet4) {
+        double d[3][3];
+        for (int a = 0; a < 3; ++a)
+          for (int i = 0; i < 3; ++i) d[a][i] = m.coord(q[a + 1], i) - m.coord(q[0], i);
+        v = (d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+             d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0])) / 6.0;
+      } else {  // hex8 of an axis-aligned box
+        v = 1.0;
+        for (int i = 0; i < 3; ++i) v *= m.coord(q[6], i) - m.coord(q[0], i);
+      }
+      total += v;
+      smallest = std::min(smallest, v);
+    }
+  }
+  return {total, smallest};
+}
+
+// Divergence theorem on the surface of a body: sum over facets of (x . n) dA = dim * volume.
+double surfaceFlux(const Mesh& m, int body) {
+  const Surface& s = m.surfaces.at(body);
+  double flux = 0.0;
+  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    const LocalIndex* n = &s.facets[std::size_t(f) * s.nodesPerFacet];
+    if (m.dim == 2) {
+      const double tx = m.coord(n[1], 0) - m.coord(n[0], 0), ty = m.coord(n[1], 1) - m.coord(n[0], 1);
+      const double mx = 0.5 * (m.coord(n[0], 0) + m.coord(n[1], 0)), my = 0.5 * (m.coord(n[0], 1) + m.coord(n[1], 1));
+      flux += mx * ty - my * tx;  // x . (t_y, -t_x)
+    } else {
+      // split quads into two triangles; area vector = cross / 2
+      const int nt = s.nodesPerFacet == 4 ? 2 : 1;
+      for (int t = 0; t < nt; ++t) {
+        const LocalIndex a = n[0], b = n[t + 1], c = n[t + 2];
+        double u[3], v[3], cen[3];
+        for (int i = 0; i < 3; ++i) {
+          u[i] = m.coord(b, i) - m.coord(a, i);
+          v[i] = m.coord(c, i) - m.coord(a, i);
+          cen[i] = (m.coord(a, i) + m.coord(b, i) + m.coord(c, i)) / 3.0;
+        }
+        const double nx = u[1] * v[2] - u[2] * v[1], ny = u[2] * v[0] - u[0] * v[2], nz = u[0] * v[1] - u[1] * v[0];
+        flux += 0.5 * (cen[0] * nx + cen[1] * ny + cen[2] * nz);
+      }
+    }
+  }
+  return flux;
+}
+
+TEST(Generators, RectangleAndBoxSurfacesAreClosedAndOutward) {
+  RectangleSpec r;
+  r.lx = 2.0, r.ly = 3.0, r.nx = 4, r.ny = 5;
+  Mesh rect = rectangle(r);
+  EXPECT_EQ(rect.numNodes(), 30);
+  EXPECT_NEAR(cellMeasures(rect).first, 6.0, 1e-12);
+  EXPECT_EQ(rect.surfaces[0].numFacets(), 18);
+  EXPECT_NEAR(surfaceFlux(rect, 0), 2 * 6.0, 1e-12);
+  for (bool tets : {false, true}) {
+    BoxSpec b;
+    b.lx = 1.0, b.ly = 2.0, b.lz = 0.5, b.nx = 2, b.ny = 3, b.nz = 2, b.tetrahedra = tets;
+    Mesh box3 = box(b);
+    const auto [volume, smallest] = cellMeasures(box3);
+    EXPECT_NEAR(volume, 1.0, 1e-12);
+    EXPECT_GT(smallest, 0.0);
+    EXPECT_NEAR(surfaceFlux(box3, 0), 3 * 1.0, 1e-12);
+    EXPECT_EQ(box3.surfaces[0].nodesPerFacet, tets ? 3 : 4);
+    EXPECT_EQ(box3.nodeSet("zmax").size(), 12u);
+  }
+}
+
+TEST(Generators, AppendKeepsBodiesApart) {
+  RectangleSpec a, b;
+  a.nx = a.ny = 2;
+  b.nx = b.ny = 3;
+  b.y0 = 1.5;
+  Mesh m = rectangle(a);
+  append(m, rectangle(b), "upper ");
+  EXPECT_EQ(m.numBodies, 2);
+  ASSERT_EQ(m.surfaces.size(), 2u);
+  EXPECT_EQ(m.surfaces[0].numFacets(), 8);
+  EXPECT_EQ(m.surfaces[1].numFacets(), 12);
+  EXPECT_NEAR(surfaceFlux(m, 1), 2 * 1.0, 1e-12);
+  EXPECT_EQ(m.nodeSet("upper top").size(), 4u);
+  EXPECT_THROW(m.nodeSet("middle"), InputError);
+}
+
+TEST(Benchmark, QuarterDiskIsValidAndConvergesToTheDisk) {
+  double previousError = 1.0;
+  for (int level = 0; level <= 2; ++level) {
+    QuarterDiskSpec s;
+    s.radius = 1.0;
+    s.centerY = 1.01;
+    s.refinement = level;
+    const Mesh m = quarterDisk(s);
+    const auto [area, smallest] = cellMeasures(m);
+    EXPECT_GT(smallest, 0.0);
+    const double error = std::abs(area - M_PI / 4);
+    EXPECT_LT(error, 2e-3);
+    EXPECT_LT(error, 0.3 * previousError + 1e-15);  // second order: /4 per level
+    previousError = error;
+    EXPECT_NEAR(surfaceFlux(m, 0), 2 * area, 1e-10);
+    const LocalIndex apex = m.nodeSet("apex").at(0);
+    EXPECT_NEAR(m.coord(apex, 0), 0.0, 1e-14);
+    EXPECT_NEAR(m.coord(apex, 1), 0.01, 1e-14);
+    for (LocalIndex n : m.nodeSet("axis")) EXPECT_EQ(m.coord(n, 0), 0.0);
+    for (LocalIndex n : m.nodeSet("equator")) EXPECT_NEAR(m.coord(n, 1), 1.01, 1e-14);
+    if (level == 0) {
+      EXPECT_GT(m.numNodes(), 500);
+      EXPECT_LT(m.numNodes(), 900);
+    }
+  }
+  QuarterDiskSpec upper;
+  upper.lowerHalf = false;
+  const Mesh m = quarterDisk(upper);
+  EXPECT_GT(cellMeasures(m).second, 0.0);
+  EXPECT_NEAR(m.coord(m.nodeSet("apex").at(0), 1), 1.0, 1e-14);
+}
+
+TEST(Benchmark, HalfSpaceBlockIsGradedTowardsTheContactZone) {
+  HalfSpaceSpec s;
+  const Mesh m = halfSpaceBlock(s);
+  const auto [area, smallest] = cellMeasures(m);
+  EXPECT_NEAR(area, 64.0, 1e-10);
+  EXPECT_GT(smallest, 0.0);
+  EXPECT_NEAR(surfaceFlux(m, 0), 2 * 64.0, 1e-9);
+  const LocalIndex apex = m.nodeSet("apex").at(0);
+  EXPECT_EQ(m.coord(apex, 0), 0.0);
+  EXPECT_NEAR(m.coord(apex, 1), 0.0, 1e-14);
+  // the surface cells next to the axis are the fine ones
+  const auto& top = m.nodeSet("top");
+  EXPECT_NEAR(m.coord(top[1], 0) - m.coord(top[0], 0), 0.025, 1e-12);
+  EXPECT_GT(m.coord(top.back(), 0) - m.coord(top[top.size() - 2], 0), 1.0);
+}
+
+TEST(Benchmark, GradingsFillTheirLength) {
+  const auto g = geometric(2.0, 0.01, 30);
+  EXPECT_EQ(g.size(), 31u);
+  EXPECT_NEAR(g[1], 0.01, 1e-12);
+  EXPECT_EQ(g.back(), 2.0);
+  const auto f = fineThenGeometric(8.0, 0.5, 20, 10);
+  EXPECT_NEAR(f[20], 0.5, 1e-12);
+  EXPECT_EQ(f.back(), 8.0);
+  for (std::size_t k = 21; k < f.size(); ++k) EXPECT_GT(f[k] - f[k - 1], f[k - 1] - f[k - 2] - 1e-12);
+  EXPECT_THROW(fineThenGeometric(1.0, 2.0, 4, 4), InputError);
+}
+
+}  // namespace
+}  // namespace cgcm::mesh
