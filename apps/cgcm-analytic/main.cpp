@@ -1,0 +1,537 @@
+// cgcm-analytic: the closed-form adhesive contact models (Hertz, JKR, DMT,
+// Maugis-Dugdale) in the Johnson-Greenwood normalisation, their subsurface
+// stress, their pull-off points, the CGCM <-> M-D mapping and the fit of λ to
+// a computed CGCM load curve. Every subcommand writes CSV with a header line
+// to stdout or to --output FILE.
+//
+// Exit codes: 0 success; 2 bad arguments or input (message on stderr naming
+// the option and the allowed values); 1 numerical failure.
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cgcm/analytic/CgcmMapping.hpp"
+#include "cgcm/analytic/LoadCurveFit.hpp"
+#include "cgcm/analytic/MaugisDugdale.hpp"
+#include "cgcm/analytic/Models.hpp"
+#include "cgcm/analytic/Pressure.hpp"
+#include "cgcm/analytic/PullOff.hpp"
+#include "cgcm/analytic/SubsurfaceStress.hpp"
+#include "cgcm/core/Error.hpp"
+
+namespace {
+
+using cgcm::Real;
+namespace an = cgcm::analytic;
+
+constexpr const char* kProgram = "cgcm-analytic";
+
+/// Bad command line: reported with the subcommand's usage, exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Args;
+
+struct OptionSpec {
+  std::string name;  // without the leading "--"
+  bool takesValue;
+  std::string help;
+};
+
+struct Command {
+  std::string name;
+  std::string summary;
+  std::string details;
+  std::vector<OptionSpec> options;
+  std::function<void(Args&, std::ostream&)> run;
+};
+
+const std::string kModelOptionsHelp =
+    "  --model M        hertz, jkr, dmt or md (required)\n"
+    "  --lambda L       Maugis-Dugdale transition parameter (41), required for md\n"
+    "                   and only for md; 1e-3 <= L <= 1e3\n";
+const std::string kCgcmOptionsHelp =
+    "  --gammaL G --gammaW G --nu V\n"
+    "                   optional, all three or none: also write the columns in CGCM\n"
+    "                   normalisation (R0 = Y = 1) through the factors of `map`\n";
+const std::string kCommonHelp =
+    "  --output FILE    write the CSV to FILE instead of stdout\n"
+    "  --help           this text\n";
+
+std::string usageOf(const Command& c) {
+  std::ostringstream out;
+  out << "usage: " << kProgram << " " << c.name << " [options]\n\n" << c.summary << "\n\n"
+      << c.details;
+  return out.str();
+}
+
+class Args {
+ public:
+  Args(const Command& cmd, const std::vector<std::string>& argv) : cmd_(cmd) {
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+      const std::string& arg = argv[i];
+      if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+        throw UsageError("unexpected argument '" + arg + "' (options start with --)");
+      }
+      std::string name = arg.substr(2);
+      std::optional<std::string> inlineValue;
+      if (const auto eq = name.find('='); eq != std::string::npos) {
+        inlineValue = name.substr(eq + 1);
+        name = name.substr(0, eq);
+      }
+      const OptionSpec* spec = find(name);
+      if (!spec) throw UsageError("unknown option --" + name + " (allowed: " + allowed() + ")");
+      if (values_.count(name)) throw UsageError("option --" + name + " given twice");
+      if (spec->takesValue) {
+        if (inlineValue) {
+          values_[name] = *inlineValue;
+        } else {
+          if (i + 1 >= argv.size()) throw UsageError("option --" + name + " needs a value");
+          values_[name] = argv[++i];
+        }
+      } else {
+        if (inlineValue) throw UsageError("option --" + name + " takes no value");
+        values_[name] = "";
+      }
+    }
+  }
+
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+
+  std::string text(const std::string& name) const {
+    const auto it = values_.find(name);
+    if (it == values_.end()) throw UsageError("missing required option --" + name);
+    return it->second;
+  }
+
+  /// A finite number in [lo, hi].
+  Real real(const std::string& name, Real lo, Real hi, const std::string& range) const {
+    const std::string s = text(name);
+    char* end = nullptr;
+    errno = 0;
+    const Real v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v)) {
+      throw UsageError("option --" + name + ": '" + s + "' is not a finite number");
+    }
+    if (!(v >= lo && v <= hi)) {
+      throw UsageError("option --" + name + ": " + s + " is out of range (allowed: " + range + ")");
+    }
+    return v;
+  }
+  Real real(const std::string& name, Real lo, Real hi, const std::string& range, Real dflt) const {
+    return has(name) ? real(name, lo, hi, range) : dflt;
+  }
+
+  long integer(const std::string& name, long lo, long hi) const {
+    const std::string s = text(name);
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(s.c_str(), &end, 10);
+    if (s.empty() || *end != '\0' || errno == ERANGE) {
+      throw UsageError("option --" + name + ": '" + s + "' is not an integer");
+    }
+    if (v < lo || v > hi) {
+      throw UsageError("option --" + name + ": " + s + " is out of range (allowed: " +
+                       std::to_string(lo) + " to " + std::to_string(hi) + ")");
+    }
+    return v;
+  }
+  long integer(const std::string& name, long lo, long hi, long dflt) const {
+    return has(name) ? integer(name, lo, hi) : dflt;
+  }
+
+ private:
+  const OptionSpec* find(const std::string& name) const {
+    for (const auto& o : cmd_.options) {
+      if (o.name == name) return &o;
+    }
+    return nullptr;
+  }
+  std::string allowed() const {
+    std::string s;
+    for (const auto& o : cmd_.options) s += (s.empty() ? "--" : ", --") + o.name;
+    return s;
+  }
+  const Command& cmd_;
+  std::map<std::string, std::string> values_;
+};
+
+// ---- shared option groups ------------------------------------------------
+
+const std::vector<OptionSpec> kModelOptions = {{"model", true, ""}, {"lambda", true, ""}};
+const std::vector<OptionSpec> kCgcmOptions = {
+    {"gammaL", true, ""}, {"gammaW", true, ""}, {"nu", true, ""}};
+const std::vector<OptionSpec> kCommonOptions = {{"output", true, ""}, {"help", false, ""}};
+
+std::vector<OptionSpec> join(std::initializer_list<std::vector<OptionSpec>> groups) {
+  std::vector<OptionSpec> out;
+  for (const auto& g : groups) out.insert(out.end(), g.begin(), g.end());
+  return out;
+}
+
+an::ContactModel modelFrom(const Args& args) {
+  const std::string name = args.text("model");
+  an::Model kind;
+  try {
+    kind = an::parseModel(name);
+  } catch (const cgcm::InputError&) {
+    throw UsageError("option --model: unknown model '" + name +
+                     "' (allowed: " + std::string(an::kModelNames) + ")");
+  }
+  std::optional<Real> lambda;
+  if (args.has("lambda")) {
+    if (kind != an::Model::MaugisDugdale) {
+      throw UsageError("option --lambda applies only to --model md");
+    }
+    lambda = args.real("lambda", an::kLambdaMin, an::kLambdaMax, "1e-3 <= lambda <= 1e3");
+  } else if (kind == an::Model::MaugisDugdale) {
+    throw UsageError("--model md needs --lambda (1e-3 <= lambda <= 1e3)");
+  }
+  return an::ContactModel::make(kind, lambda);
+}
+
+std::optional<an::CgcmMapping> mappingFrom(const Args& args, bool required) {
+  const int given = args.has("gammaL") + args.has("gammaW") + args.has("nu");
+  if (given == 0 && !required) return std::nullopt;
+  if (given != 3) {
+    throw UsageError("options --gammaL, --gammaW and --nu go together (all three are needed)");
+  }
+  const Real big = 1e300;
+  const Real gL = args.real("gammaL", 0, big, "gammaL > 0");
+  const Real gW = args.real("gammaW", 0, big, "gammaW > 0");
+  const Real nu = args.real("nu", -1, 0.5, "-1 < nu < 0.5");
+  if (gL <= 0) throw UsageError("option --gammaL: must be > 0");
+  if (gW <= 0) throw UsageError("option --gammaW: must be > 0");
+  if (nu <= -1 || nu >= 0.5) throw UsageError("option --nu: allowed: -1 < nu < 0.5");
+  return an::cgcmMapping(gL, gW, nu);
+}
+
+/// Formats numbers with 12 significant digits (inf/-inf/nan as printf does).
+std::string num(Real v) {
+  if (v == 0) v = 0;  // print −0 as 0
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+
+// ---- subcommands -----------------------------------------------------------
+
+void runCurve(Args& args, std::ostream& out) {
+  const an::ContactModel model = modelFrom(args);
+  const auto map = mappingFrom(args, false);
+  const Real aMin = args.real("a-min", 1e-12, 1e6, "0 < a-min <= 1e6", 1e-3);
+  const Real aMax = args.real("a-max", 1e-12, 1e6, "0 < a-max <= 1e6", 3.0);
+  if (!(aMax > aMin)) throw UsageError("option --a-max must exceed --a-min");
+  const long n = args.integer("points", 2, 10000000, 300);
+  out << "a,P,delta" << (map ? ",a_cgcm,P_cgcm,u_cgcm" : "") << "\n";
+  Real sGuess = -1;
+  for (long i = 0; i < n; ++i) {
+    const Real a = aMin + (aMax - aMin) * static_cast<Real>(i) / static_cast<Real>(n - 1);
+    an::CurvePoint p;
+    if (model.kind() == an::Model::MaugisDugdale) {
+      const an::MdSolution sol = an::solveMaugisDugdale(model.lambda(), a, sGuess);
+      sGuess = sol.s;
+      p = {a, sol.load, sol.approach};
+    } else {
+      p = model.at(a);
+    }
+    out << num(p.a) << "," << num(p.load) << "," << num(p.approach);
+    if (map) out << "," << num(map->fa * p.a) << "," << num(map->fF * p.load) << "," << num(map->fdelta * p.approach);
+    out << "\n";
+  }
+}
+
+void runPressure(Args& args, std::ostream& out) {
+  const an::ContactModel model = modelFrom(args);
+  const auto map = mappingFrom(args, false);
+  const Real a = args.real("a", 1e-12, 1e6, "0 < a <= 1e6");
+  const an::PressureProfile p(model, a);
+  const Real m = p.outerRadius() / a;
+  const Real rmax = args.real("rmax", 0, 1e6, "0 < rmax <= 1e6 (multiples of a)",
+                              std::fmax(1.5, 1.25 * m));
+  if (rmax <= 0) throw UsageError("option --rmax must be > 0");
+  const long n = args.integer("points", 2, 10000000, 301);
+  out << "r_over_a,p" << (map ? ",r_cgcm,p_cgcm" : "") << "\n";
+  for (long i = 0; i < n; ++i) {
+    const Real x = rmax * static_cast<Real>(i) / static_cast<Real>(n - 1);
+    const Real v = p.atRelative(x);
+    out << num(x) << "," << num(v);
+    if (map) out << "," << num(map->fa * x * a) << "," << num(map->fsigma * v);
+    out << "\n";
+  }
+}
+
+void runStress(Args& args, std::ostream& out) {
+  const an::ContactModel model = modelFrom(args);
+  const auto map = mappingFrom(args, false);
+  const Real a = args.real("a", 1e-12, 1e6, "0 < a <= 1e6");
+  const std::string grid = args.text("grid");
+  long nr = 0, nz = 0;
+  {
+    char* end = nullptr;
+    errno = 0;
+    nr = std::strtol(grid.c_str(), &end, 10);
+    const bool okFirst = end != grid.c_str() && *end == ',';
+    const char* second = okFirst ? end + 1 : end;
+    nz = okFirst ? std::strtol(second, &end, 10) : 0;
+    if (!okFirst || end == second || *end != '\0' || errno == ERANGE || nr < 2 || nz < 2 ||
+        nr > 100000 || nz > 100000) {
+      throw UsageError("option --grid: '" + grid +
+                       "' is not NR,NZ (two integers, 2 to 100000, e.g. --grid 200,200)");
+    }
+  }
+  const Real rmax = args.real("rmax", 0, 1e6, "0 < rmax <= 1e6 (multiples of a)", 2.0);
+  const Real zmax = args.real("zmax", 0, 1e6, "0 < zmax <= 1e6 (multiples of a)", 2.0);
+  if (rmax <= 0) throw UsageError("option --rmax must be > 0");
+  if (zmax <= 0) throw UsageError("option --zmax must be > 0");
+  const long threads = args.integer("threads", 1, 256, 1);
+  an::StressOptions opt;
+  opt.relTol = args.real("tol", 1e-14, 1e-2, "1e-14 <= tol <= 1e-2", opt.relTol);
+  const an::PressureProfile p(model, a);
+  std::vector<Real> r(nr), z(nz);
+  for (long i = 0; i < nr; ++i) r[i] = rmax * a * static_cast<Real>(i) / static_cast<Real>(nr - 1);
+  for (long j = 0; j < nz; ++j) z[j] = zmax * a * static_cast<Real>(j) / static_cast<Real>(nz - 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<Real> s = an::sigmaZGrid(p, r, z, opt, static_cast<int>(threads));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cerr << kProgram << " stress: " << nr << " x " << nz << " points in " << seconds << " s\n";
+  out << "r,z,sigma_z" << (map ? ",r_cgcm,z_cgcm,sigma_z_cgcm" : "") << "\n";
+  for (long j = 0; j < nz; ++j) {
+    for (long i = 0; i < nr; ++i) {
+      const Real v = s[static_cast<std::size_t>(j * nr + i)];
+      out << num(r[i]) << "," << num(z[j]) << "," << num(v);
+      if (map) out << "," << num(map->fa * r[i]) << "," << num(map->fa * z[j]) << "," << num(map->fsigma * v);
+      out << "\n";
+    }
+  }
+}
+
+void runPullOff(Args& args, std::ostream& out) {
+  const an::ContactModel model = modelFrom(args);
+  const an::PullOff p = an::pullOff(model);
+  if (!p.adhesive) {
+    std::cerr << kProgram << " pulloff: hertz has no adhesion and no pull-off; "
+              << "both rows report P = 0 at a = 0\n";
+  } else if (!p.displacementJump) {
+    std::cerr << kProgram << " pulloff: " << model.describe()
+              << ": no jump under displacement control (d delta/d a > 0 for all a > 0); "
+              << "the displacement row is the end of the contact branch, a -> 0\n";
+  }
+  out << "control,P,a,delta\n";
+  out << "load," << num(p.loadControl.load) << "," << num(p.loadControl.a) << ","
+      << num(p.loadControl.approach) << "\n";
+  out << "displacement," << num(p.displacementControl.load) << "," << num(p.displacementControl.a)
+      << "," << num(p.displacementControl.approach) << "\n";
+}
+
+void runMap(Args& args, std::ostream& out) {
+  const an::CgcmMapping m = *mappingFrom(args, true);
+  out << "gammaL,gammaW,nu,f_w,f_E,f_F,f_a,f_delta,f_sigma,w,sigma_max,lambda_theory,mu_tabor\n";
+  out << num(m.gammaL) << "," << num(m.gammaW) << "," << num(m.nu) << "," << num(m.fw) << ","
+      << num(m.fE) << "," << num(m.fF) << "," << num(m.fa) << "," << num(m.fdelta) << ","
+      << num(m.fsigma) << "," << num(m.workOfAdhesion) << "," << num(m.sigmaMax) << ","
+      << num(m.lambdaTheory) << "," << num(m.muTabor) << "\n";
+}
+
+void runFit(Args& args, std::ostream& out) {
+  const an::CgcmMapping map = *mappingFrom(args, true);
+  const std::string path = args.text("curve");
+  an::FitOptions opt;
+  const Real big = 1e300;
+  opt.lambdaMin = args.real("lambda-min", an::kLambdaMin, an::kLambdaMax, "1e-3 <= lambda-min <= 1e3", an::kLambdaMin);
+  opt.lambdaMax = args.real("lambda-max", an::kLambdaMin, an::kLambdaMax, "1e-3 <= lambda-max <= 1e3", an::kLambdaMax);
+  if (!(opt.lambdaMax > opt.lambdaMin)) throw UsageError("option --lambda-max must exceed --lambda-min");
+  opt.fitOffset = args.has("fit-offset");
+  opt.offset = args.real("offset", -big, big, "a finite number", 0.0);
+  if (args.has("offset-bound")) {
+    if (!opt.fitOffset) throw UsageError("option --offset-bound needs --fit-offset");
+    opt.offsetBound = args.real("offset-bound", 0, big, "offset-bound > 0");
+    if (*opt.offsetBound <= 0) throw UsageError("option --offset-bound must be > 0");
+  }
+  if (args.has("u-min")) opt.uMin = args.real("u-min", -big, big, "a finite number");
+  if (args.has("u-max")) opt.uMax = args.real("u-max", -big, big, "a finite number");
+  const std::string uCol = args.has("u-column") ? args.text("u-column") : "u";
+  const std::string pCol = args.has("P-column") ? args.text("P-column") : "P";
+  const an::LoadCurve curve = an::readLoadCurveCsv(path, uCol, pCol);
+  const an::FitResult r = an::fitMaugisDugdale(curve, map, opt);
+  if (r.atBound) {
+    std::cerr << kProgram << " fit: warning: the best lambda lies at the end of the search range ["
+              << opt.lambdaMin << ", " << opt.lambdaMax << "]\n";
+  }
+  out << "lambda,offset,rms_residual,max_abs_residual,rms_relative,points,u_from,u_to,lambda_theory\n";
+  out << num(r.lambda) << "," << num(r.offset) << "," << num(r.rms) << "," << num(r.maxAbs) << ","
+      << num(r.rmsRelative) << "," << r.points << "," << num(r.uFrom) << "," << num(r.uTo) << ","
+      << num(map.lambdaTheory) << "\n";
+}
+
+std::vector<Command> commands() {
+  return {
+      {"curve", "Equilibrium curve of a model: columns a, P, delta (normalised by (36)).",
+       "options:\n" + kModelOptionsHelp +
+           "  --a-min A        smallest contact radius (default 1e-3)\n"
+           "  --a-max A        largest contact radius (default 3)\n"
+           "  --points N       number of radii, evenly spaced (default 300)\n" +
+           kCgcmOptionsHelp + "                   (columns a_cgcm, P_cgcm, u_cgcm)\n" + kCommonHelp +
+           "\nexample: cgcm-analytic curve --model md --lambda 0.25 --a-max 2\n",
+       join({kModelOptions, kCgcmOptions, kCommonOptions,
+             {{"a-min", true, ""}, {"a-max", true, ""}, {"points", true, ""}}}),
+       runCurve},
+      {"pressure", "Contact pressure p(r) at contact radius a: columns r_over_a, p.",
+       "options:\n" + kModelOptionsHelp +
+           "  --a A            contact radius (normalised, required)\n"
+           "  --rmax X         largest r/a (default 1.5, or 1.25 m for md so that the\n"
+           "                   adhesive zone a <= r <= m a shows)\n"
+           "  --points N       number of radii from 0 to rmax (default 301)\n" +
+           kCgcmOptionsHelp + "                   (columns r_cgcm, p_cgcm)\n" + kCommonHelp +
+           "\nJKR gives p = -inf at r = a. DMT gives the Hertz pressure: its adhesive\n"
+           "force acts outside the contact with vanishing stress.\n"
+           "\nexample: cgcm-analytic pressure --model md --lambda 1 --a 1\n",
+       join({kModelOptions, kCgcmOptions, kCommonOptions, {{"a", true, ""}, {"rmax", true, ""}, {"points", true, ""}}}),
+       runPressure},
+      {"stress", "Subsurface stress sigma_z(r, z) from (46) on a grid: columns r, z, sigma_z.",
+       "options:\n" + kModelOptionsHelp +
+           "  --a A            contact radius (normalised, required)\n"
+           "  --grid NR,NZ     grid size (required), r from 0 to rmax*a, z from 0 to zmax*a\n"
+           "  --rmax X         (default 2) and --zmax X (default 2), multiples of a\n"
+           "  --threads N      worker threads (default 1)\n"
+           "  --tol T          tolerance of each sigma_z relative to the pressure scale\n"
+           "                   (default 1e-9)\n" +
+           kCgcmOptionsHelp + "                   (columns r_cgcm, z_cgcm, sigma_z_cgcm)\n" + kCommonHelp +
+           "\nr and z are normalised like a; sigma_z like p (compression negative);\n"
+           "sigma_z(r, 0) = -p(r). The run time is reported on stderr.\n"
+           "\nexample: cgcm-analytic stress --model md --lambda 1 --a 1 --grid 200,200\n",
+       join({kModelOptions, kCgcmOptions, kCommonOptions,
+             {{"a", true, ""}, {"grid", true, ""}, {"rmax", true, ""}, {"zmax", true, ""},
+              {"threads", true, ""}, {"tol", true, ""}}}),
+       runStress},
+      {"pulloff", "Load- and displacement-control pull-off points: control, P, a, delta.",
+       "options:\n" + kModelOptionsHelp + kCommonHelp +
+           "\nRow `load`: the minimum of P(a). Row `displacement`: the point where\n"
+           "d delta/d a = 0 (fixed grips). Hertz has no pull-off (both rows P = 0 at\n"
+           "a = 0). For md with lambda below about 0.938 delta(a) is monotone, the\n"
+           "contact shrinks to a = 0 without a jump, and the displacement row is that\n"
+           "end point (a note goes to stderr).\n"
+           "\nexample: cgcm-analytic pulloff --model md --lambda 1\n",
+       join({kModelOptions, kCommonOptions}), runPullOff},
+      {"map", "CGCM <-> M-D normalisation factors (48)-(53), theoretical lambda, Tabor mu.",
+       "options:\n"
+       "  --gammaL G       gammaL = R0/r0 (plain, not barred; required)\n"
+       "  --gammaW G       gammaW = Y/(beta0^2 r0^3 eps) (plain; required)\n"
+       "  --nu V           Poisson ratio, -1 < nu < 0.5 (required)\n" +
+           kCommonHelp +
+           "\nColumns: f_w, f_E, f_F, f_a, f_delta, f_sigma, w = w/(Y R0),\n"
+           "sigma_max = sigma0/Y, lambda_theory, mu_tabor.\n"
+           "\nexample: cgcm-analytic map --gammaL 50 --gammaW 200 --nu 0.2\n",
+       join({kCgcmOptions, kCommonOptions}), runMap},
+      {"fit", "Least-squares M-D lambda (and optional approach offset) for a CGCM load curve.",
+       "options:\n"
+       "  --curve FILE     load curve CSV with a header (columns read by name)\n"
+       "  --gammaL G --gammaW G --nu V   as for `map` (required)\n"
+       "  --fit-offset     also fit an offset: u = f_delta delta + offset\n"
+       "  --offset X       the fixed offset, or the centre of its search (default 0)\n"
+       "  --offset-bound D half-width of the offset search (default: half the u-span\n"
+       "                   of the fitted points)\n"
+       "  --u-min U --u-max U\n"
+       "                   fit the points with U-min <= u <= U-max (default: u >= u at\n"
+       "                   the minimum of P, i.e. the pull-off point and the contact side)\n"
+       "  --lambda-min L --lambda-max L   search range (default 1e-3 and 1e3)\n"
+       "  --u-column NAME --P-column NAME column names (default u and P)\n" +
+           kCommonHelp +
+           "\nThe model is P = f_F P_MD(a), u = f_delta delta_MD(a) + offset on the\n"
+           "displacement-control branch; the residual is in P at the data's u.\n"
+           "\nexample: cgcm-analytic fit --curve load_curve.csv --gammaL 50 --gammaW 200 --nu 0.2\n",
+       join({kCgcmOptions, kCommonOptions,
+             {{"curve", true, ""}, {"fit-offset", false, ""}, {"offset", true, ""},
+              {"offset-bound", true, ""}, {"u-min", true, ""}, {"u-max", true, ""},
+              {"lambda-min", true, ""}, {"lambda-max", true, ""}, {"u-column", true, ""},
+              {"P-column", true, ""}}}),
+       runFit},
+  };
+}
+
+std::string globalUsage(const std::vector<Command>& cmds) {
+  std::ostringstream out;
+  out << "usage: " << kProgram << " <command> [options]\n\n"
+      << "Closed-form adhesive contact of a sphere on a half-space (Hertz, JKR, DMT,\n"
+      << "Maugis-Dugdale) in the Johnson-Greenwood normalisation, and their mapping to\n"
+      << "the CGCM. Each command writes CSV with a header to stdout (or --output FILE).\n\n"
+      << "commands:\n";
+  for (const auto& c : cmds) {
+    std::string first = c.summary.substr(0, c.summary.find('\n'));
+    out << "  " << c.name << std::string(c.name.size() < 10 ? 10 - c.name.size() : 1, ' ')
+        << first << "\n";
+  }
+  out << "\n`" << kProgram << " <command> --help` describes a command's options.\n";
+  return out.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<Command> cmds = commands();
+  std::vector<std::string> rest(argv + 1, argv + argc);
+  if (rest.empty()) {
+    std::cerr << kProgram << ": missing command\n\n" << globalUsage(cmds);
+    return 2;
+  }
+  if (rest[0] == "--help" || rest[0] == "-h" || rest[0] == "help") {
+    std::cout << globalUsage(cmds);
+    return 0;
+  }
+  const Command* cmd = nullptr;
+  for (const auto& c : cmds) {
+    if (c.name == rest[0]) cmd = &c;
+  }
+  if (!cmd) {
+    std::string names;
+    for (const auto& c : cmds) names += (names.empty() ? "" : ", ") + c.name;
+    std::cerr << kProgram << ": unknown command '" << rest[0] << "' (allowed: " << names
+              << ")\n\n"
+              << globalUsage(cmds);
+    return 2;
+  }
+  rest.erase(rest.begin());
+  try {
+    Args args(*cmd, rest);
+    if (args.has("help")) {
+      std::cout << usageOf(*cmd);
+      return 0;
+    }
+    if (args.has("output")) {
+      const std::string path = args.text("output");
+      std::ofstream file(path);
+      if (!file) throw UsageError("option --output: cannot open '" + path + "' for writing");
+      cmd->run(args, file);
+      file.flush();
+      if (!file) {
+        std::cerr << kProgram << " " << cmd->name << ": error writing '" << path << "'\n";
+        return 1;
+      }
+    } else {
+      cmd->run(args, std::cout);
+      std::cout.flush();
+    }
+    return 0;
+  } catch (const UsageError& e) {
+    std::cerr << kProgram << " " << cmd->name << ": " << e.what() << "\n\n" << usageOf(*cmd);
+    return 2;
+  } catch (const cgcm::InputError& e) {
+    std::cerr << kProgram << " " << cmd->name << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << kProgram << " " << cmd->name << ": error: " << e.what() << "\n";
+    return 1;
+  }
+}
