@@ -2,8 +2,13 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include <cmath>
+#include <sstream>
+
 #include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/Normalisation.hpp"
 #include "cgcm/io/Deck.hpp"
+#include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
@@ -58,8 +63,17 @@ RCP<const ParameterList> validParameters() {
               choices({"plane strain", "axisymmetric", "3D"}));
 
   auto& geometry = valid->sublist("Geometry", false, "bodies and their mesh");
-  geometry.set("Type", "block", "\"block\": a rectangle (2D) or box (3D) compressed or stretched along its last axis",
-               choices({"block"}));
+  geometry.set("Type", "sphere on half-space",
+               "\"sphere on half-space\" (the paper's benchmark; cylinder on half-space in plane strain), "
+               "\"sphere on sphere\", or \"block\" (a rectangle or box stretched along its last axis)",
+               choices({"sphere on half-space", "sphere on sphere", "block"}));
+  geometry.set("Sphere Radius", 1.0, "radius R0 of the upper sphere: the reference length", atLeast(1e-300));
+  geometry.set("Second Sphere Radius", 1.0, "radius of the lower sphere (Type = sphere on sphere)",
+               atLeast(1e-300));
+  geometry.set("Half-Space Size", 8.0, "width and depth of the half-space block, in sphere radii (>= 2)",
+               atLeast(2.0));
+  auto refinement = rcp(new Teuchos::EnhancedNumberValidator<int>(0, 6));
+  geometry.set("Mesh Refinement", 0, "level 0 (about 1400 nodes) .. 6; each level halves every cell", refinement);
   auto& block = geometry.sublist("Block", false,
                                  "Type = block: corner at the origin; symmetry rollers on the faces x = 0, y = 0 "
                                  "(and z = 0 in 3D); the face at the far end of the last axis moves by the load u");
@@ -84,6 +98,30 @@ RCP<const ParameterList> validParameters() {
                "U(J): \"(Lambda/2)(ln J)^2\" (default) or \"(Lambda/4)(J^2-1-2 ln J)\"",
                choices({"(Lambda/2)(ln J)^2", "(Lambda/4)(J^2-1-2 ln J)"}));
 
+  auto& inter = valid->sublist("Interaction", false,
+                                "Lennard-Jones interaction between the bodies (sphere geometries), THEORY sections 2, 4");
+  inter.set("Potential", "Lennard-Jones",
+            "\"Lennard-Jones\" (adhesion and repulsion) or \"repulsive\" (its r^-12 part only: a smooth barrier)",
+            choices({"Lennard-Jones", "repulsive"}));
+  inter.set("Method", "half-space point", "\"half-space point\" (Method 3)", choices({"half-space point"}));
+  inter.set("gammaL", 50.0, "R0 / r0: geometric scale (22)", atLeast(1e-300));
+  inter.set("gammaW", 200.0, "Y / (beta0^2 r0^3 epsilon): energy-density ratio (28)", atLeast(1e-300));
+  inter.set("gammaL bar", 0.0, "the paper's equivalent parameter; > 0 replaces gammaL through the Barred Convention",
+            atLeast(0.0));
+  inter.set("gammaW bar", 0.0, "the paper's equivalent parameter; > 0 replaces gammaW through the Barred Convention",
+            atLeast(0.0));
+  inter.set("Barred Convention", "identity",
+            "how barred values convert: \"identity\" (gamma = gamma bar, the reading the paper's numbers support) or "
+            "\"literal\" (gammaL = gammaL bar / (3/4)^(1/6), gammaW = gammaW bar / sqrt(3)); see doc/theory.md",
+            choices({"identity", "literal"}));
+  inter.set("r0", 0.0, "physical input instead of the gammas: equilibrium distance of the pair potential (> 0 to use)",
+            atLeast(0.0));
+  inter.set("epsilon", 0.0, "physical input: energy well of the pair potential (with r0)", atLeast(0.0));
+  inter.set("beta0", 1.0, "reference particle density of both bodies", atLeast(1e-300));
+  inter.set("Quadrature Points", 4, "Gauss points per surface segment", intAtLeast(1));
+  inter.set("Cutoff", 10.0, "interaction cutoff in units of r0: farther points are skipped", atLeast(1.0));
+  inter.set("Search Radius Factor", 2.0, "matrix-graph search radius / cutoff (> 1)", atLeast(1.01));
+
   valid->sublist("Loading", false,
                  "displacement control: the load parameter u is the prescribed displacement, stepped along the path")
       .setParameters(*solver::LoadPathSettings::validParameters());
@@ -100,6 +138,126 @@ RCP<const ParameterList> validParameters() {
   return valid;
 }
 
+namespace {
+
+// Interaction parameters from the deck, with the scales they imply.
+InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real nu, Real reducedRadius,
+                                  assembly::Formulation formulation, std::vector<std::string>& report,
+                                  Real& forceScale) {
+  const bool barred = in.get<double>("gammaL bar") > 0.0 || in.get<double>("gammaW bar") > 0.0;
+  const bool physical = in.get<double>("r0") > 0.0 || in.get<double>("epsilon") > 0.0;
+  const bool plainSet = !in.getEntry("gammaL").isDefault() || !in.getEntry("gammaW").isDefault();
+  if (int(barred) + int(physical) + int(plainSet) > 1)
+    throw InputError("Interaction: give one of (gammaL, gammaW), (gammaL bar, gammaW bar) or (r0, epsilon)");
+  const Real beta0 = in.get<double>("beta0");
+  Real gammaL = in.get<double>("gammaL"), gammaW = in.get<double>("gammaW");
+  if (barred) {
+    const Real gLb = in.get<double>("gammaL bar"), gWb = in.get<double>("gammaW bar");
+    if (!(gLb > 0.0 && gWb > 0.0)) throw InputError("Interaction: set both gammaL bar and gammaW bar (> 0)");
+    const bool literal = in.get<std::string>("Barred Convention") == "literal";
+    gammaL = literal ? gLb / std::pow(0.75, 1.0 / 6.0) : gLb;
+    gammaW = literal ? gWb / std::sqrt(3.0) : gWb;
+  } else if (physical) {
+    if (!(in.get<double>("r0") > 0.0 && in.get<double>("epsilon") > 0.0))
+      throw InputError("Interaction: set both r0 and epsilon (> 0)");
+    interaction::InteractionParameters p{in.get<double>("epsilon"), in.get<double>("r0"), beta0, R0, Y};
+    const auto sc = interaction::toScaling(p);
+    gammaL = sc.gammaL;
+    gammaW = sc.gammaW;
+  }
+  const auto phys = interaction::fromScaling(gammaL, gammaW, R0, Y, beta0);
+  InteractionSetup s;
+  const std::string potentialName = in.get<std::string>("Potential") == "repulsive" ? "repulsive" : "lennard-jones";
+  s.potential = interaction::makePotential(potentialName, phys.epsilon, phys.r0);
+  s.densities = {beta0, beta0};
+  s.options.formulation = formulation == assembly::Formulation::Axisymmetric ? interaction::Formulation::Axisymmetric
+                                                                              : interaction::Formulation::PlaneStrain;
+  s.options.quadraturePoints = in.get<int>("Quadrature Points");
+  s.options.cutoff = in.get<double>("Cutoff") * phys.r0;
+  s.searchRadius = in.get<double>("Search Radius Factor") * s.options.cutoff;
+
+  // Derived scales (THEORY sections 2, 4, 5), for the run's report.
+  const Real rS0 = phys.r0 / std::pow(15.0, 1.0 / 6.0);
+  const Real w = interaction::LennardJones::workFactor() * beta0 * beta0 * phys.epsilon * std::pow(phys.r0, 4);
+  const Real sigmaMax = interaction::LennardJones::peakTractionFactor() * beta0 * beta0 * phys.epsilon *
+                        std::pow(phys.r0, 3);
+  const Real Estar = Y / (2.0 * (1.0 - nu * nu));
+  const Real tabor = std::cbrt(reducedRadius * w * w / (Estar * Estar * rS0 * rS0 * rS0));
+  const Real lambda = sigmaMax * std::cbrt(9.0 * reducedRadius / (2.0 * M_PI * w * Estar * Estar));
+  forceScale = 2 * M_PI * w * reducedRadius;
+  std::ostringstream o;
+  o.precision(6);
+  o << "gammaL = " << gammaL << ", gammaW = " << gammaW << " (barred, literal reading: "
+    << gammaL * std::pow(0.75, 1.0 / 6.0) << ", " << gammaW * std::sqrt(3.0) << "); gammaK = gammaW/gammaL = "
+    << gammaW / gammaL;
+  report.push_back(o.str());
+  o.str("");
+  o << "R0 = " << R0 << ", E0 = Y R0^3 = " << Y * R0 * R0 * R0 << ", r0 = " << phys.r0 << ", epsilon = "
+    << phys.epsilon << ", beta0 = " << beta0;
+  report.push_back(o.str());
+  o.str("");
+  o << "potential " << s.potential->name() << ": r_S0 = " << rS0 << ", w = " << w << ", sigma_max = " << sigmaMax
+    << ", cutoff = " << s.options.cutoff << ", |T(cutoff)|/sigma_max = "
+    << std::abs(s.potential->traction(s.options.cutoff, beta0, beta0)) / sigmaMax;
+  report.push_back(o.str());
+  o.str("");
+  o << "Lennard-Jones scales: Tabor mu = " << tabor << ", Maugis-Dugdale lambda (theory) = " << lambda
+    << ", 2 pi w R = " << 2 * M_PI * w * reducedRadius << ", 1.5 pi w R = " << 1.5 * M_PI * w * reducedRadius
+    << " (R = " << reducedRadius << ")";
+  report.push_back(o.str());
+  return s;
+}
+
+// Sphere (radius R0, apex at the equilibrium gap above y = 0) over a half-space
+// block or a second sphere; u moves the sphere's equator plane down.
+void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
+  const auto& g = deck.sublist("Geometry");
+  const bool onSphere = g.get<std::string>("Type") == "sphere on sphere";
+  if (s.formulation == assembly::Formulation::ThreeD)
+    throw InputError("Geometry/Type = \"" + g.get<std::string>("Type") +
+                     "\" is built in plane strain or axisymmetry; Problem/Formulation = \"3D\" needs a mesh file");
+  const Real R0 = g.get<double>("Sphere Radius"), R2 = g.get<double>("Second Sphere Radius");
+  const int level = g.get<int>("Mesh Refinement");
+  const auto& in = deck.sublist("Interaction");
+  const Real reducedRadius = onSphere ? R0 * R2 / (R0 + R2) : R0;
+  s.interaction = buildInteraction(in, R0, s.material.youngsModulus(), s.material.poissonRatio(), reducedRadius,
+                                   s.formulation, s.report, s.forceScale);
+  const Real r0 = s.interaction->potential->r0();
+  const Real rS0 = r0 / std::pow(15.0, 1.0 / 6.0);  // u = 0: undeformed surfaces r_S0 apart
+
+  mesh::QuarterDiskSpec sphere;
+  sphere.radius = R0;
+  sphere.centerY = R0 + rS0;
+  sphere.refinement = level;
+  sphere.name = "sphere";
+  auto m = std::make_shared<mesh::Mesh>(mesh::quarterDisk(sphere));
+  if (onSphere) {
+    mesh::QuarterDiskSpec lower;
+    lower.radius = R2;
+    lower.centerY = -R2;
+    lower.lowerHalf = false;
+    lower.refinement = level;
+    lower.name = "second sphere";
+    mesh::append(*m, mesh::quarterDisk(lower), "lower ");
+  } else {
+    mesh::HalfSpaceSpec h;
+    h.width = h.depth = g.get<double>("Half-Space Size") * R0;
+    h.fineLength = 0.5 * R0;
+    h.refinement = level;
+    mesh::Mesh block = mesh::halfSpaceBlock(h);
+    block.nodeSets["equator"] = block.nodeSets.at("bottom");  // the fixed far side
+    mesh::append(*m, block, "lower ");
+  }
+  s.mesh = m;
+  s.conditions = {{"axis", 0, 0.0, 0.0},       {"equator", 1, 0.0, -1.0}, {"lower axis", 0, 0.0, 0.0},
+                  {"lower equator", 0, 0.0, 0.0}, {"lower equator", 1, 0.0, 0.0}};
+  s.load = {"equator", 1, -1.0};  // P > 0: compressive
+  s.balance = ForceResponse{"lower equator", 1, 1.0};
+  s.contact = ContactGeometry{"apex", "lower apex", 0, 1, rS0};
+}
+
+}  // namespace
+
 ProblemSetup buildProblem(const ParameterList& deck) {
   ProblemSetup s;
   s.formulation = parseFormulation(deck.sublist("Problem").get<std::string>("Formulation"));
@@ -112,7 +270,9 @@ ProblemSetup buildProblem(const ParameterList& deck) {
 
   const auto& geometry = deck.sublist("Geometry");
   const std::string type = geometry.get<std::string>("Type");
-  if (type == "block") {
+  if (type != "block") {
+    buildSphereContact(deck, s);
+  } else {
     const auto& b = geometry.sublist("Block");
     const bool clamped = b.get<std::string>("Loaded Face") == "clamped";
     if (s.formulation == assembly::Formulation::ThreeD) {

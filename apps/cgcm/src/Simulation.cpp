@@ -1,10 +1,16 @@
 #include "cgcm/app/Simulation.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/ClosestPointSearch.hpp"
 #include "cgcm/io/CsvWriter.hpp"
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
@@ -13,6 +19,59 @@
 namespace cgcm::app {
 
 using assembly::Vector;
+
+namespace {
+
+// Gap on the axis and contact radius of a two-body contact state.
+class ContactProbe {
+ public:
+  ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Assembler& a)
+      : c_(c), mesh_(m), assembler_(a), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)) {}
+
+  /// Distance along the axis between the apex nodes. Collective.
+  Real gap(const Vector& u) const {
+    const int y = mesh_.dim - 1;
+    return (mesh_.coord(upper_, y) + assembler_.nodeValue(u, upper_, y)) -
+           (mesh_.coord(lower_, y) + assembler_.nodeValue(u, lower_, y));
+  }
+
+  /// Radial position where the upper surface is first farther than the
+  /// contact distance from the lower surface (0 if the apex already is). Collective.
+  Real contactRadius(const Vector& u) const {
+    const std::vector<Real>& x = assembler_.surfaceCoordinates(u);
+    auto search = interaction::makeClosestPointSearch(2);
+    search->build(x.data(), mesh_.surfaces[c_.lowerBody]);
+    std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of upper surface nodes
+    const auto& s = mesh_.surfaces[c_.upperBody];
+    std::vector<LocalIndex> nodes(s.facets);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    const Real reach = 20.0 * c_.contactDistance;
+    for (LocalIndex n : nodes) {
+      const Real* p = &x[std::size_t(n) * 2];
+      const auto proj = search->project(p, reach);
+      profile.push_back({p[0], proj.found() ? proj.distance : std::numeric_limits<Real>::infinity()});
+    }
+    std::sort(profile.begin(), profile.end());
+    if (profile.empty() || profile[0].second >= c_.contactDistance) return 0.0;
+    for (std::size_t k = 1; k < profile.size(); ++k)
+      if (profile[k].second >= c_.contactDistance) {
+        const auto& [r0, d0] = profile[k - 1];
+        const auto& [r1, d1] = profile[k];
+        if (!std::isfinite(d1)) return r1;
+        return r0 + (c_.contactDistance - d0) / (d1 - d0) * (r1 - r0);
+      }
+    return profile.back().first;
+  }
+
+ private:
+  ContactGeometry c_;
+  const mesh::Mesh& mesh_;
+  assembly::Assembler& assembler_;
+  LocalIndex upper_, lower_;
+};
+
+}  // namespace
 
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
                         std::ostream& log) {
@@ -24,9 +83,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Everything that can be rejected is checked before any work starts.
   ProblemSetup setup = buildProblem(deck);
   const auto loading = solver::LoadPathSettings::fromParameters(deck.sublist("Loading"));
-  const auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
-  auto linearSolver = solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize(),
-                                                assembly::formulationDim(setup.formulation));
+  auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
+  newtonSettings.stallTolerance = newtonSettings.relativeStallTolerance * setup.forceScale;
+  const int dim = assembly::formulationDim(setup.formulation);
+  auto linearSolver =
+      solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize(), dim);
   for (const auto& c : setup.conditions) setup.mesh->nodeSet(c.nodeSet);
 
   if (root) {
@@ -35,24 +96,35 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   comm->barrier();
 
-  const int dim = assembly::formulationDim(setup.formulation);
   auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim));
   auto assembler = std::make_shared<assembly::Assembler>(dofs, setup.mesh, setup.formulation, setup.material);
+  if (setup.interaction) {
+    const auto& in = *setup.interaction;
+    assembler->setInteraction(std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities,
+                                                                                in.potential, in.options),
+                              in.searchRadius);
+  }
   auto dirichlet = std::make_shared<assembly::DirichletConditions>(dofs);
   for (const auto& c : setup.conditions)
     dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
   auto model = Teuchos::rcp(new solver::ModelEvaluator(assembler, dirichlet, linearSolver));
   solver::NewtonSolver newton(model, newtonSettings);
+  std::unique_ptr<ContactProbe> probe;
+  if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *setup.mesh, *assembler);
 
-  if (root && printSteps)
+  if (root && printSteps) {
     log << "cgcm: " << assembly::formulationName(setup.formulation) << ", " << setup.mesh->numNodes() << " nodes, "
         << setup.mesh->numCells() << " cells, " << dofs->ownedMap()->getGlobalNumElements() << " dofs, "
         << comm->getSize() << " rank(s)\n";
+    for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
+  }
 
+  std::vector<std::string> columns{"step", "u", "P"};
+  if (probe) columns.insert(columns.end(), {"gap", "contact_radius", "P_lower"});
+  columns.insert(columns.end(), {"newton_iterations", "jump", "residual", "cutbacks"});
   std::unique_ptr<io::CsvWriter> csv;
-  if (root) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv",
-                                                  std::vector<std::string>{"step", "u", "P", "newton_iterations",
-                                                                           "residual", "cutbacks"});
+  if (root) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+
   RunResult result;
   Vector u(model->map());
   Vector f(model->map());
@@ -61,20 +133,42 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     model->evaluateUnconstrained(uSolved, f);
     const Real P = setup.load.sign * assembler->sumOverNodes(f, loadNodes, setup.load.component);
     const Real res = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
-    result.curve.push_back({info.step, info.load, P, info.newton.iterations, res});
-    result.newtonSeconds += info.newton.seconds;
+    LoadPoint pt{info.step, info.load, P, 0.0, 0.0, info.newton.iterations, info.jump, res};
+    Real Plower = 0.0;
+    if (probe) {
+      pt.gap = probe->gap(uSolved);
+      pt.contactRadius = probe->contactRadius(uSolved);
+      Plower = setup.balance->sign * assembler->sumOverNodes(f, setup.mesh->nodeSet(setup.balance->nodeSet),
+                                                             setup.balance->component);
+    }
+    result.curve.push_back(pt);
+    result.stalledSteps += info.newton.stalled ? 1 : 0;
     if (!root) return;
-    csv->row({double(info.step), info.load, P, double(info.newton.iterations), res, double(info.cutbacks)});
+    std::vector<double> row{double(info.step), info.load, P};
+    if (probe) row.insert(row.end(), {pt.gap, pt.contactRadius, Plower});
+    row.insert(row.end(), {double(info.newton.iterations), info.jump ? 1.0 : 0.0, res, double(info.cutbacks)});
+    csv->row(row);
     if (printSteps) {
-      char line[200];
-      std::snprintf(line, sizeof line, "step %4d  u = %+.6e  P = %+.6e  newton %2d  |f| = %.2e%s\n", info.step,
-                    info.load, P, info.newton.iterations, res,
-                    info.cutbacks ? ("  (" + std::to_string(info.cutbacks) + " cut-backs)").c_str() : "");
+      char line[240];
+      std::snprintf(line, sizeof line, "step %4d  u = %+.6e  P = %+.6e%s  newton %2d  |f| = %.2e%s%s%s\n",
+                    info.step, info.load, P, probe ? ("  gap = " + std::to_string(pt.gap)).c_str() : "",
+                    info.newton.iterations, res, info.newton.stalled ? " (stalled)" : "",
+                    info.cutbacks ? ("  (" + std::to_string(info.cutbacks) + " cut-backs)").c_str() : "",
+                    info.jump ? "  JUMP" : "");
       log << line << std::flush;
     }
   };
 
   solver::LoadStepper stepper(model, newton, loading);
+  if (probe) {
+    // A state that moved much more than the prescribed displacement left its branch.
+    const Real floor = 0.05 * setup.interaction->potential->r0();
+    stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
+      const Real du = std::abs(model->load() - result.curve.back().u);
+      return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
+    });
+  }
+  const auto runStart = std::chrono::steady_clock::now();
   try {
     stepper.run(u, observe);
     result.completed = true;
@@ -82,9 +176,38 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     result.failure = e.what();
     if (root) log << "cgcm: stopped: " << e.what() << "\n";
   }
-  result.assemblySeconds = assembler->timings().residual + assembler->timings().jacobian;
-  if (root && printSteps)
-    log << "cgcm: " << result.curve.size() << " states written to " << dir << "/load_curve.csv\n";
+  result.newtonSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+  const auto& t = assembler->timings();
+  result.assemblySeconds = t.residual + t.jacobian;
+  result.interactionSeconds = t.interaction;
+
+  // Summary: minimum force, jumps, time split.
+  if (root && !result.curve.empty()) {
+    const auto minIt = std::min_element(result.curve.begin(), result.curve.end(),
+                                        [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
+    std::ofstream sum(dir + "/summary.txt");
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "P_min = %.10g at u = %.10g (step %d)\n", minIt->P, minIt->u, minIt->step);
+    sum << buf;
+    if (printSteps) log << "cgcm: " << buf;
+    for (const auto& pt : result.curve)
+      if (pt.jump) {
+        std::snprintf(buf, sizeof buf, "jump at step %d: u = %.10g, P = %.10g\n", pt.step, pt.u, pt.P);
+        sum << buf;
+        if (printSteps) log << "cgcm: " << buf;
+      }
+    int iterations = 0;
+    for (const auto& pt : result.curve) iterations += pt.newtonIterations;
+    std::snprintf(buf, sizeof buf,
+                  "steps = %zu (%d accepted at a stall), Newton iterations = %d (%.2f per step); wall time of the "
+                  "load path %.3f s = bulk assembly %.3f s + interaction %.3f s + linear solves and NOX %.3f s\n",
+                  result.curve.size(), result.stalledSteps, iterations,
+                  double(iterations) / std::max<std::size_t>(1, result.curve.size()),
+                  result.newtonSeconds, result.assemblySeconds, result.interactionSeconds,
+                  result.newtonSeconds - result.assemblySeconds - result.interactionSeconds);
+    sum << buf << (result.completed ? "completed\n" : "stopped: " + result.failure + "\n");
+    if (printSteps) log << "cgcm: " << buf << "cgcm: outputs in " << dir << "/\n";
+  }
   return result;
 }
 

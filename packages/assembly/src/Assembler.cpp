@@ -341,6 +341,10 @@ bool Assembler::updateInteractionGraph(const Vector& u, bool keepExisting, Real 
   return true;
 }
 
+Real Assembler::nodeValue(const Vector& v, LocalIndex node, int component) const {
+  return sumOverNodes(v, {node}, component);
+}
+
 Real Assembler::sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const {
   auto fv = f.getLocalViewHost(Tpetra::Access::ReadOnly);
   const Map& owned = *dofs_->ownedMap();

@@ -1,5 +1,6 @@
 #include "cgcm/mesh/Benchmark.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -154,8 +155,11 @@ Mesh quarterDisk(const QuarterDiskSpec& s) {
   for (int k = 0; k <= nR; ++k) axis.push_back(bId[0][k]);
   for (int i = 0; i <= nB; ++i) equator.push_back(coreId[i][nC]);
   for (int k = 0; k <= nR; ++k) equator.push_back(cId[nC][k]);
-  std::sort(axis.begin(), axis.end());
-  std::sort(equator.begin(), equator.end());
+  // the patches share their first rays with the core: remove the repeated nodes
+  for (auto* set : {&axis, &equator}) {
+    std::sort(set->begin(), set->end());
+    set->erase(std::unique(set->begin(), set->end()), set->end());
+  }
   m.nodeSets["axis"] = axis;
   m.nodeSets["equator"] = equator;
   m.nodeSets["apex"] = {bId[0][nR]};

@@ -30,6 +30,10 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
   valid->set("Growth Factor", 1.5, "increment growth after an easy step (>= 1)", growth);
   auto cut = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.01, 0.99));
   valid->set("Cutback Factor", 0.5, "increment reduction after a failed step (0.01 .. 0.99)", cut);
+  valid->set("Fold Increment", 1e-4,
+             "a step that fails or jumps even below this increment marks a fold of the load path "
+             "(jump-to-contact / jump-off-contact): the state then jumps to the other stable branch",
+             positive);
   return valid;
 }
 
@@ -43,6 +47,7 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
   s.easyIterations = p.get<int>("Easy Step Iterations");
   s.growth = p.get<double>("Growth Factor");
   s.cutback = p.get<double>("Cutback Factor");
+  s.foldIncrement = p.get<double>("Fold Increment");
   if (s.path.size() < 2)
     throw InputError("Loading/Approach Path needs at least two values (start and target), got " +
                      std::to_string(s.path.size()));
@@ -55,6 +60,9 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
       throw InputError("Loading/Approach Path keeps moving the same way through waypoint " +
                        std::to_string(s.path[i - 1]) + "; list only the turning points (e.g. {-0.02, 0.06, -0.03})");
   }
+  if (s.minIncrement > s.foldIncrement)
+    throw InputError("Loading: need Min Increment <= Fold Increment, got " + std::to_string(s.minIncrement) +
+                     " and " + std::to_string(s.foldIncrement));
   if (s.minIncrement > s.initialIncrement || s.initialIncrement > s.maxIncrement)
     throw InputError("Loading: need Min Increment <= Initial Increment <= Max Increment, got " +
                      std::to_string(s.minIncrement) + ", " + std::to_string(s.initialIncrement) + ", " +
@@ -99,8 +107,22 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
         // Land exactly on the waypoint when the remainder is a small fraction of a step.
         const Real pNew = (dir * (target - p) - dp < 0.05 * dp) ? target : p + dir * dp;
         info.load = pNew;
-        if (attempt(pNew, info)) break;
+        const bool converged = attempt(pNew, info);
+        if (converged && (!continuous_ || continuous_(u, trial))) break;
+        if (converged) info.newton.failure = "the state left its branch";
         ++info.cutbacks;
+        if (increment <= settings_.foldIncrement) {
+          // The branch ends here: let the state settle on the other stable branch.
+          model_->setLoad(pNew);
+          trial.assign(u);
+          model_->dirichlet().impose(pNew, trial);
+          info.newton = newton_.solvePseudoTransient(trial);
+          if (info.newton.converged) {
+            info.jump = !continuous_ || !continuous_(u, trial);
+            increment = settings_.initialIncrement;
+            break;
+          }
+        }
         increment *= settings_.cutback;
         if (increment < settings_.minIncrement) {
           std::ostringstream msg;

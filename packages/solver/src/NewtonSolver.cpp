@@ -11,7 +11,11 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_TpetraLinearOp.hpp>
+
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "cgcm/core/Error.hpp"
@@ -41,7 +45,33 @@ class ResidualRecorder : public NOX::Observer {
   int rank_;
 };
 
-double evaluationSeconds(const assembly::Assembler& a) { return a.timings().residual + a.timings().jacobian; }
+double evaluationSeconds(const assembly::Assembler& a) {
+  return a.timings().residual + a.timings().jacobian + a.timings().interaction;
+}
+
+// Converged when |f| is below `tolerance` and the last iteration reduced it by
+// less than half: the residual has reached the level of its own jumps.
+class StallTest : public NOX::StatusTest::Generic {
+ public:
+  explicit StallTest(Real tolerance) : tolerance_(tolerance) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& s, NOX::StatusTest::CheckType) override {
+    status_ = NOX::StatusTest::Unconverged;
+    if (s.getNumIterations() >= 2) {
+      const Real now = s.getSolutionGroup().getNormF(), before = s.getPreviousSolutionGroup().getNormF();
+      if (now <= tolerance_ && now > 0.5 * before) status_ = NOX::StatusTest::Converged;
+    }
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& o, int indent) const override {
+    for (int i = 0; i < indent; ++i) o << ' ';
+    return o << status_ << "Stall below " << tolerance_ << "\n";
+  }
+
+ private:
+  Real tolerance_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unconverged;
+};
 
 }  // namespace
 
@@ -60,6 +90,11 @@ Teuchos::RCP<const Teuchos::ParameterList> NewtonSettings::validParameters() {
   iters->setMin(1);
   valid->set("Max Iterations", 25, "Newton iterations before the load step is cut back", iters);
   valid->set("Print Iterations", false, "print |f| after every Newton iteration");
+  valid->set("Stall Tolerance", 1e-2,
+             "contact problems: accept a state whose |f| stopped decreasing below this fraction of the adhesion "
+             "force scale 2 pi w R (the residual of Method 3 jumps where closest points cross concave corners of "
+             "the discretised surface); 0 disables",
+             positive);
   return valid;
 }
 
@@ -70,6 +105,7 @@ NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& p) {
   s.absoluteTolerance = p.get<double>("Absolute Tolerance");
   s.maxIterations = p.get<int>("Max Iterations");
   s.printIterations = p.get<bool>("Print Iterations");
+  s.relativeStallTolerance = p.get<double>("Stall Tolerance");
   return s;
 }
 
@@ -101,9 +137,32 @@ void NewtonSolver::resetJacobian() {
 }
 
 NewtonResult NewtonSolver::solve(Vector& u) {
-  NewtonResult result;
   const auto t0 = std::chrono::steady_clock::now();
   const double eval0 = evaluationSeconds(model_->assembler());
+  // The interaction couplings of the graph must cover the pairs near the start state.
+  if (model_->assembler().updateInteractionGraph(u)) resetJacobian();
+  NewtonResult result;
+  int rebuilds = 0;
+  for (int rebuild = 0;; ++rebuild) {
+    result = solveOnCurrentGraph(u);
+    result.graphRebuilds = rebuilds;
+    if (!result.graphOutdated || rebuild == 2) break;
+    // Pairs moved beyond the graph during the iteration: widen it around the
+    // start and around the iterate where it happened, then redo the solve.
+    Vector iterate(u.getMap());
+    iterate.assign(*lastIterate_);
+    model_->assembler().updateInteractionGraph(u, true, 1.0 + rebuild);
+    model_->assembler().updateInteractionGraph(iterate, true, 1.0 + rebuild);
+    resetJacobian();
+    ++rebuilds;
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.evaluationSeconds = evaluationSeconds(model_->assembler()) - eval0;
+  return result;
+}
+
+NewtonResult NewtonSolver::solveOnCurrentGraph(Vector& u) {
+  NewtonResult result;
 
   auto uCopy = Teuchos::rcp(new Vector(u, Teuchos::Copy));
   auto uThyra = Thyra::createVector(Teuchos::rcp_implicit_cast<Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(uCopy));
@@ -113,6 +172,11 @@ NewtonResult NewtonSolver::solve(Vector& u) {
   auto converged = Teuchos::rcp(new Combo(Combo::OR));
   converged->addStatusTest(Teuchos::rcp(new NormF(*group_, settings_.relativeTolerance)));
   converged->addStatusTest(Teuchos::rcp(new NormF(settings_.absoluteTolerance)));
+  Teuchos::RCP<StallTest> stall;
+  if (settings_.stallTolerance > 0.0) {
+    stall = Teuchos::rcp(new StallTest(settings_.stallTolerance));
+    converged->addStatusTest(stall);
+  }
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);
@@ -129,6 +193,8 @@ NewtonResult NewtonSolver::solve(Vector& u) {
     result.iterations = solver->getNumIterations();
     if (status == Converged && !model_->lastEvaluationInverted()) {
       result.converged = true;
+      result.stalled = !stall.is_null() && stall->getStatus() == Converged &&
+                       solver->getSolutionGroup().getNormF() > settings_.absoluteTolerance;
       const auto& x = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
       u.assign(*Extract::getConstTpetraVector(x.getThyraRCPVector()));
     } else if (status == Converged) {
@@ -140,11 +206,85 @@ NewtonResult NewtonSolver::solve(Vector& u) {
     }
   } catch (const InvertedElementError& e) {
     result.failure = e.what();
+  } catch (const assembly::GraphOutdatedError& e) {
+    result.failure = e.what();
+    result.graphOutdated = true;
+    lastIterate_ = Teuchos::rcp(new Vector(u.getMap()));
+    const auto& x = dynamic_cast<const NOX::Thyra::Vector&>(group_->getX());
+    lastIterate_->assign(*Extract::getConstTpetraVector(x.getThyraRCPVector()));
   } catch (const NumericalError& e) {
     result.failure = e.what();
   } catch (const std::exception& e) {
     // Linear solver breakdowns and line-search failures end up here: a failed step, not a crash.
     result.failure = std::string("solver failure: ") + e.what();
+  }
+  return result;
+}
+
+NewtonResult NewtonSolver::solvePseudoTransient(Vector& u, Real initialTimeStep, int maxSteps) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const double eval0 = evaluationSeconds(model_->assembler());
+  auto& assembler = model_->assembler();
+  const auto& dirichlet = model_->dirichlet();
+  const Real p = model_->load();
+  const auto map = model_->map();
+  Vector x(map), f(map), dx(map), minusF(map), diag(map);
+  x.assign(u);
+  NewtonResult result;
+  Real dt = initialTimeStep, fPrevious = -1.0, f0 = -1.0;
+  auto space = Thyra::createVectorSpace<Real>(map);
+  for (int step = 0; step < maxSteps; ++step) {
+    assembler.updateInteractionGraph(x, true);
+    auto J = assembler.createMatrix();
+    try {
+      assembler.evaluate(x, f, J.get());
+    } catch (const NumericalError& e) {
+      result.failure = std::string("pseudo-transient: ") + e.what();
+      break;
+    }
+    dirichlet.applyToResidual(x, p, f);
+    dirichlet.applyToJacobian(*J);
+    const Real fn = f.norm2();
+    if (f0 < 0.0) f0 = fn;
+    result.residualNorms.push_back(fn);
+    if (fn <= std::max(settings_.absoluteTolerance, 1e-6 * f0) && dt > 1e6) break;  // Newton finishes
+    if (fPrevious > 0.0) dt = std::min(1e12, dt * std::min(4.0, fPrevious / fn));
+    fPrevious = fn;
+    // J + D/dt with D = |diag J| (unit on constrained rows)
+    J->getLocalDiagCopy(diag);
+    J->beginModify();
+    {
+      auto lcl = J->getLocalMatrixHost();
+      auto d = diag.getLocalViewHost(Tpetra::Access::ReadOnly);
+      const auto& rowMap = *J->getRowMap();
+      const auto& colMap = *J->getColMap();
+      for (LocalIndex r = 0; r < LocalIndex(lcl.numRows()); ++r) {
+        const LocalIndex dc = colMap.getLocalElement(rowMap.getGlobalElement(r));
+        auto row = lcl.row(r);
+        for (LocalIndex k = 0; k < row.length; ++k)
+          if (row.colidx(k) == dc) row.value(k) += std::abs(d(r, 0)) / dt;
+      }
+    }
+    J->endModify();
+    Teuchos::RCP<const ::Thyra::LinearOpBase<Real>> op = ::Thyra::tpetraLinearOp<Real, LocalIndex, GlobalIndex, assembly::Node>(
+        space, space, Teuchos::rcp_implicit_cast<assembly::Operator>(J));
+    auto lows = ::Thyra::linearOpWithSolve(*model_->get_W_factory(), op);
+    minusF.update(-1.0, f, 0.0);
+    dx.putScalar(0.0);
+    auto b = ::Thyra::createConstVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(minusF), space);
+    auto s = ::Thyra::createVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(dx), space);
+    lows->solve(::Thyra::NOTRANS, *b, s.ptr());
+    x.update(1.0, dx, 1.0);
+    ++result.iterations;
+  }
+  if (result.failure.empty()) {
+    const int pseudoSteps = result.iterations;
+    NewtonResult newton = solve(x);
+    newton.iterations += pseudoSteps;
+    newton.residualNorms.insert(newton.residualNorms.begin(), result.residualNorms.begin(),
+                                result.residualNorms.end());
+    result = newton;
+    if (result.converged) u.assign(x);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   result.evaluationSeconds = evaluationSeconds(model_->assembler()) - eval0;

@@ -2,6 +2,7 @@
 // with the divergence theorem), node sets where they belong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cgcm/core/Error.hpp"
@@ -123,6 +124,8 @@ TEST(Benchmark, QuarterDiskIsValidAndConvergesToTheDisk) {
     const LocalIndex apex = m.nodeSet("apex").at(0);
     EXPECT_NEAR(m.coord(apex, 0), 0.0, 1e-14);
     EXPECT_NEAR(m.coord(apex, 1), 0.01, 1e-14);
+    for (const auto& [name, nodes] : m.nodeSets)
+      EXPECT_TRUE(std::adjacent_find(nodes.begin(), nodes.end()) == nodes.end()) << name << " repeats a node";
     for (LocalIndex n : m.nodeSet("axis")) EXPECT_EQ(m.coord(n, 0), 0.0);
     for (LocalIndex n : m.nodeSet("equator")) EXPECT_NEAR(m.coord(n, 1), 1.01, 1e-14);
     if (level == 0) {

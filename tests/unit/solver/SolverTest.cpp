@@ -7,6 +7,7 @@
 #include <Tpetra_Core.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <sstream>
 
@@ -24,8 +25,10 @@ namespace {
 using Teuchos::ParameterList;
 using Teuchos::RCP;
 
+// A block deck (the bulk problems of these tests) with the given overrides.
 RCP<ParameterList> deck(const std::vector<std::string>& overrides) {
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
+  io::applyOverrides(*d, *app::validParameters(), {"Geometry/Type=block"});
   io::applyOverrides(*d, *app::validParameters(), overrides);
   io::validateDeck(*d, *app::validParameters());
   return d;
@@ -205,6 +208,34 @@ TEST(Input, BadDecksStopWithMessagesNamingTheParameter) {
   expectError({"Loading/Approach Path={0, 0.1, 0.2}"}, "Approach Path");
   expectError({"Material/Youngs Modulus=1"}, "Youngs Modulus");
   expectError({"Solver/Newton/Line Search=trust region"}, "Line Search");
+}
+
+}  // namespace
+}  // namespace cgcm
+
+namespace cgcm {
+namespace {
+
+using Teuchos::ParameterList;
+
+TEST(Interaction, UndeformedBenchmarkMeshGivesDerjaguinForceOnBothBodies) {
+  // Undeformed sphere over the half-space at the equilibrium gap: the force on
+  // each body is the rigid-sphere (Derjaguin) value, 2 pi w R up to the
+  // curvature correction of a polygonal sphere at R/r0 = 50 (-0.9837, computed
+  // independently by quadrature of T(h(rho)) 2 pi rho over the same polyline).
+  auto d = Teuchos::rcp(new ParameterList("cgcm"));
+  io::validateDeck(*d, *app::validParameters());
+  const auto s = app::buildProblem(*d);
+  const auto& in = *s.interaction;
+  interaction::SurfaceInteraction si(s.mesh->surfaces, in.densities, in.potential, in.options);
+  si.updatePairs(s.mesh->coords);
+  std::vector<interaction::PairContribution> out;
+  si.evaluate(s.mesh->coords, out, false);
+  const double twoPiWR = 2 * M_PI * in.potential->workOfAdhesion(1.0, 1.0);
+  const auto& r = si.summary().resultant;
+  std::printf("resultants / 2 pi w R: sphere %.6f, half-space %.6f\n", r[0][1] / twoPiWR, r[1][1] / twoPiWR);
+  EXPECT_NEAR(r[0][1] / twoPiWR, -0.9837, 0.005);
+  EXPECT_NEAR(-r[1][1] / twoPiWR, -0.9837, 0.02);
 }
 
 }  // namespace

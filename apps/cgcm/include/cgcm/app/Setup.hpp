@@ -4,10 +4,12 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cgcm/assembly/Assembler.hpp"
+#include "cgcm/interaction/SurfaceInteraction.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 
@@ -28,12 +30,35 @@ struct ForceResponse {
   Real sign;
 };
 
+/// The interaction between the bodies (Method 3) and its scales.
+struct InteractionSetup {
+  std::shared_ptr<const interaction::PairPotential> potential;
+  std::vector<Real> densities;  ///< reference density per body
+  interaction::SurfaceInteractionOptions options;
+  Real searchRadius = 0.0;      ///< graph search radius (> cutoff)
+};
+
+/// Two-body contact responses: the gap on the axis between the apex nodes,
+/// and the contact radius (where the surfaces are `contactDistance` apart).
+struct ContactGeometry {
+  std::string upperApex, lowerApex;  ///< node sets of one node each
+  int upperBody = 0, lowerBody = 1;
+  Real contactDistance = 0.0;        ///< r_S0 (Lennard-Jones) or its value for the same r0
+};
+
 struct ProblemSetup {
   std::shared_ptr<mesh::Mesh> mesh;
   assembly::Formulation formulation;
   material::NeoHookean material;
   std::vector<DisplacementCondition> conditions;
   ForceResponse load;  ///< the "P" column of the load curve
+  /// Two bodies: the same resultant measured at the second body's support
+  /// ("P_lower"); it equals P up to the interaction's force imbalance.
+  std::optional<ForceResponse> balance;
+  std::optional<InteractionSetup> interaction;
+  std::optional<ContactGeometry> contact;
+  std::vector<std::string> report;  ///< scales and derived parameters, printed at the start of a run
+  Real forceScale = 0.0;            ///< 2 pi w R of the Lennard-Jones interaction (0: no interaction)
 };
 
 /// Every parameter a deck may hold, with defaults and documentation.

@@ -14,7 +14,9 @@ namespace cgcm::app {
 struct LoadPoint {
   int step;
   Real u, P;
+  Real gap, contactRadius;  ///< two-body contact only
   int newtonIterations;
+  bool jump;                ///< reached by a jump to another branch
   Real residual;
 };
 
@@ -23,7 +25,9 @@ struct RunResult {
   bool completed = false;        ///< the whole load path was traversed
   std::string failure;           ///< why not
   double assemblySeconds = 0.0;  ///< bulk residual + tangent evaluations
-  double newtonSeconds = 0.0;    ///< all Newton solves (assembly + linear solves + NOX)
+  double interactionSeconds = 0.0;  ///< interaction: search, kernel, scatter
+  double newtonSeconds = 0.0;    ///< the whole load path, failed attempts included
+  int stalledSteps = 0;          ///< steps accepted at a Newton stall (see Solver/Newton/Stall Tolerance)
 };
 
 /// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,

@@ -85,6 +85,9 @@ class Assembler {
 
   const AssemblyTimings& timings() const { return timings_; }
 
+  /// Component `component` of `v` at `node`, on every rank (collective).
+  Real nodeValue(const Vector& v, LocalIndex node, int component) const;
+
   /// Sum of component `component` of the owned entries of `f` over a node set (collective).
   Real sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const;
 

@@ -20,6 +20,10 @@ struct LoadPathSettings {
   int easyIterations = 4;             ///< grow the increment after steps this easy
   Real growth = 1.5;
   Real cutback = 0.5;
+  /// Steps that still fail (or jump) below this increment mean the
+  /// displacement-controlled branch has ended at a fold: the state jumps to
+  /// the other stable branch (pseudo-transient solve) and the step is marked.
+  Real foldIncrement = 1e-4;
 
   /// Valid parameters of the "Loading" sublist.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -32,11 +36,15 @@ struct StepInfo {
   Real load = 0.0;
   NewtonResult newton;
   int cutbacks = 0;   ///< failed attempts before this step converged
+  bool jump = false;  ///< the state jumped to another branch (fold of the load path)
 };
 
 class LoadStepper {
  public:
   using Observer = std::function<void(const StepInfo&, const Vector& u)>;
+  /// Tells whether a converged step stayed on the branch it started from
+  /// (true) or jumped to another one (false). Default: always continuous.
+  using ContinuityCheck = std::function<bool(const Vector& before, const Vector& after)>;
 
   LoadStepper(Teuchos::RCP<ModelEvaluator> model, NewtonSolver& newton, const LoadPathSettings& settings)
       : model_(std::move(model)), newton_(newton), settings_(settings) {}
@@ -46,7 +54,10 @@ class LoadStepper {
   /// minimum increment (everything observed so far stays valid).
   void run(Vector& u, const Observer& observer);
 
+  void setContinuityCheck(ContinuityCheck check) { continuous_ = std::move(check); }
+
  private:
+  ContinuityCheck continuous_;
   Teuchos::RCP<ModelEvaluator> model_;
   NewtonSolver& newton_;
   LoadPathSettings settings_;

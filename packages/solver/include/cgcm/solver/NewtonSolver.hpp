@@ -20,6 +20,13 @@ struct NewtonSettings {
   Real absoluteTolerance = 1e-12;  ///< on ||f|| (force units)
   int maxIterations = 25;
   bool printIterations = false;
+  /// Accept an iterate whose |f| stopped decreasing below this force (0: never).
+  /// Method 3 on piecewise-linear surfaces has a residual that jumps where a
+  /// closest point moves across a concave corner of the other surface, so
+  /// Newton can stall a little above zero; the problem sets this from its
+  /// force scale times "Stall Tolerance".
+  Real stallTolerance = 0.0;
+  Real relativeStallTolerance = 1e-2;  ///< "Stall Tolerance", relative to the problem's force scale
 
   /// Valid parameters of the "Newton" sublist, with defaults and documentation.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -34,6 +41,9 @@ struct NewtonResult {
   std::string failure;              ///< why it did not converge
   double seconds = 0.0;             ///< wall time of the whole solve
   double evaluationSeconds = 0.0;   ///< part of it spent in residual/tangent evaluations
+  bool stalled = false;             ///< accepted at a stall below the stall tolerance
+  bool graphOutdated = false;       ///< the last attempt met interaction entries outside the graph
+  int graphRebuilds = 0;            ///< graph rebuilds during this solve
 };
 
 class NewtonSolver {
@@ -48,11 +58,21 @@ class NewtonSolver {
   /// Rebuilds the Jacobian operator (after the matrix graph changed).
   void resetJacobian();
 
+  /// Pseudo-transient continuation from u (whose constrained dofs already hold
+  /// their values): x <- x - (J + D/dt)^-1 f with D = |diag J| and dt growing
+  /// as |f| falls (switched evolution relaxation), then Newton. Small dt moves
+  /// the state downhill like a damped dynamic relaxation, so after a fold of
+  /// the displacement-controlled path it settles on a stable branch. Collective.
+  NewtonResult solvePseudoTransient(Vector& u, Real initialTimeStep = 1e-2, int maxSteps = 150);
+
  private:
+  NewtonResult solveOnCurrentGraph(Vector& u);
+
   Teuchos::RCP<ModelEvaluator> model_;
   NewtonSettings settings_;
   Teuchos::RCP<NOX::Thyra::Group> group_;
   Teuchos::RCP<Teuchos::ParameterList> noxParams_;
+  Teuchos::RCP<Vector> lastIterate_;  ///< iterate at which the graph was found outdated
 };
 
 }  // namespace cgcm::solver
