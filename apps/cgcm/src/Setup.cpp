@@ -231,6 +231,8 @@ void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
   sphere.refinement = level;
   sphere.name = "sphere";
   auto m = std::make_shared<mesh::Mesh>(mesh::quarterDisk(sphere));
+  auto& upper = m->nodeSets["upper body"];
+  for (LocalIndex n = 0; n < m->numNodes(); ++n) upper.push_back(n);
   if (onSphere) {
     mesh::QuarterDiskSpec lower;
     lower.radius = R2;
@@ -252,6 +254,7 @@ void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
   s.conditions = {{"axis", 0, 0.0, 0.0},       {"equator", 1, 0.0, -1.0}, {"lower axis", 0, 0.0, 0.0},
                   {"lower equator", 0, 0.0, 0.0}, {"lower equator", 1, 0.0, 0.0}};
   s.load = {"equator", 1, -1.0};  // P > 0: compressive
+  s.initialMotion = {{"upper body", 1, 0.0, -1.0}};  // the sphere starts translated rigidly
   s.balance = ForceResponse{"lower equator", 1, 1.0};
   s.contact = ContactGeometry{"apex", "lower apex", 0, 1, rS0};
 }

@@ -85,6 +85,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const auto loading = solver::LoadPathSettings::fromParameters(deck.sublist("Loading"));
   auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
   newtonSettings.stallTolerance = newtonSettings.relativeStallTolerance * setup.forceScale;
+  if (setup.interaction) newtonSettings.stallUpdateTolerance = 0.1 * setup.interaction->potential->r0();
   const int dim = assembly::formulationDim(setup.formulation);
   auto linearSolver =
       solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize(), dim);
@@ -121,12 +122,18 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 
   std::vector<std::string> columns{"step", "u", "P"};
   if (probe) columns.insert(columns.end(), {"gap", "contact_radius", "P_lower"});
-  columns.insert(columns.end(), {"newton_iterations", "jump", "residual", "cutbacks"});
+  columns.insert(columns.end(), {"newton_iterations", "jump", "residual", "stalled", "cutbacks"});
   std::unique_ptr<io::CsvWriter> csv;
   if (root) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
 
   RunResult result;
   Vector u(model->map());
+  if (!setup.initialMotion.empty()) {
+    assembly::DirichletConditions motion(dofs);
+    for (const auto& c : setup.initialMotion)
+      motion.add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+    motion.impose(loading.path.front(), u);
+  }
   Vector f(model->map());
   const auto& loadNodes = setup.mesh->nodeSet(setup.load.nodeSet);
   auto observe = [&](const solver::StepInfo& info, const Vector& uSolved) {
@@ -146,7 +153,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (!root) return;
     std::vector<double> row{double(info.step), info.load, P};
     if (probe) row.insert(row.end(), {pt.gap, pt.contactRadius, Plower});
-    row.insert(row.end(), {double(info.newton.iterations), info.jump ? 1.0 : 0.0, res, double(info.cutbacks)});
+    row.insert(row.end(), {double(info.newton.iterations), info.jump ? 1.0 : 0.0, res,
+                           info.newton.stalled ? 1.0 : 0.0, double(info.cutbacks)});
     csv->row(row);
     if (printSteps) {
       char line[240];
@@ -166,6 +174,42 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
       const Real du = std::abs(model->load() - result.curve.back().u);
       return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
+    });
+  }
+  if (probe) {
+    // At a fold, control the gap instead of u for a while: hold the upper apex
+    // and move it towards the other branch in steps of r0/4, releasing it after
+    // each; the first released state that stays put is on the other branch.
+    const LocalIndex apex = setup.mesh->nodeSet(setup.contact->upperApex).at(0);
+    const int y = setup.mesh->dim - 1;
+    const Real stage = 0.25 * setup.interaction->potential->r0();
+    stepper.setJumpStepLimit(0.1 * setup.interaction->potential->r0());
+    stepper.setJumpControl([&, apex, y, stage](Real p, Vector& state, solver::NewtonResult& res) {
+      const Real towards = p > result.curve.back().u ? -1.0 : 1.0;  // approach: apex moves down
+      const Real a0 = assembler->nodeValue(state, apex, y);
+      Vector held(state), released(state.getMap());
+      res = {};
+      for (int k = 1; k <= 40; ++k) {
+        dirichlet->add({apex}, y, a0 + towards * k * stage, 0.0);
+        dirichlet->impose(p, held);
+        const auto h = newton.solve(held);
+        dirichlet->remove({apex}, y);
+        res.iterations += h.iterations;
+        if (!h.converged) {
+          res.failure = "gap control: " + h.failure;
+          return false;
+        }
+        released.assign(held);
+        auto r = newton.solve(released);
+        res.iterations += r.iterations;
+        if (r.converged && std::abs(probe->gap(released) - probe->gap(held)) < 0.5 * stage) {
+          state.assign(released);
+          res.converged = true;
+          res.residualNorms = r.residualNorms;
+          return true;
+        }
+      }
+      return false;
     });
   }
   const auto runStart = std::chrono::steady_clock::now();

@@ -34,6 +34,11 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
              "a step that fails or jumps even below this increment marks a fold of the load path "
              "(jump-to-contact / jump-off-contact): the state then jumps to the other stable branch",
              positive);
+  valid->set("Jump Method", "pseudo-transient",
+             "how the state crosses to the other branch at a fold: \"pseudo-transient\" (damped relaxation from the "
+             "last state) or \"gap control\" (two-body contact: hold the apex of the upper body and move it towards "
+             "the other branch in steps of r0/4, releasing it after each)",
+             Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("pseudo-transient", "gap control"))));
   return valid;
 }
 
@@ -48,6 +53,7 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
   s.growth = p.get<double>("Growth Factor");
   s.cutback = p.get<double>("Cutback Factor");
   s.foldIncrement = p.get<double>("Fold Increment");
+  s.jumpMethod = p.get<std::string>("Jump Method");
   if (s.path.size() < 2)
     throw InputError("Loading/Approach Path needs at least two values (start and target), got " +
                      std::to_string(s.path.size()));
@@ -73,13 +79,30 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
 void LoadStepper::run(Vector& u, const Observer& observer) {
   const auto& path = settings_.path;
   Vector trial(u.getMap());
+  Vector uPrevious(u.getMap());  // the converged state before u, for the secant predictor
+  Real pPrevious = 0.0;
+  bool havePrevious = false;
   int step = 0;
+  Real pCurrent = path[0];
 
+  // Predictor: extrapolate along the secant of the last two states (exact in
+  // the rigid phase, close elsewhere), then impose the new boundary values.
   auto attempt = [&](Real p, StepInfo& info) {
     model_->setLoad(p);
     trial.assign(u);
+    if (havePrevious && pCurrent != pPrevious)
+      trial.update((p - pCurrent) / (pCurrent - pPrevious), u, -(p - pCurrent) / (pCurrent - pPrevious), uPrevious,
+                   1.0);
     model_->dirichlet().impose(p, trial);
     info.newton = newton_.solve(trial);
+    if (!info.newton.converged && havePrevious &&
+        info.newton.failure.find("inverted") != std::string::npos) {  // the predictor overshot: retry from u
+      trial.assign(u);
+      model_->dirichlet().impose(p, trial);
+      const auto first = info.newton;
+      info.newton = newton_.solve(trial);
+      info.newton.iterations += first.iterations;
+    }
     return info.newton.converged;
   };
 
@@ -116,8 +139,15 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
           model_->setLoad(pNew);
           trial.assign(u);
           model_->dirichlet().impose(pNew, trial);
-          info.newton = newton_.solvePseudoTransient(trial);
-          if (info.newton.converged) {
+          bool landed;
+          if (jump_ && settings_.jumpMethod == "gap control") {
+            landed = jump_(pNew, trial, info.newton);
+          } else {
+            info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_);
+            // a relaxation that only stalls has not found an equilibrium
+            landed = info.newton.converged && !info.newton.stalled;
+          }
+          if (landed) {
             info.jump = !continuous_ || !continuous_(u, trial);
             increment = settings_.initialIncrement;
             break;
@@ -132,7 +162,11 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
           throw NumericalError(msg.str());
         }
       }
+      uPrevious.assign(u);
+      pPrevious = p;
+      havePrevious = !info.jump;  // no secant across a jump
       p = info.load;
+      pCurrent = p;
       u.assign(trial);
       ++step;
       observer(info, u);

@@ -52,6 +52,9 @@ struct ProblemSetup {
   material::NeoHookean material;
   std::vector<DisplacementCondition> conditions;
   ForceResponse load;  ///< the "P" column of the load curve
+  /// Initial guess at the start of the load path: these displacements (scaled
+  /// by the load) on whole bodies, e.g. the rigid approach of the upper body.
+  std::vector<DisplacementCondition> initialMotion;
   /// Two bodies: the same resultant measured at the second body's support
   /// ("P_lower"); it equals P up to the interaction's force imbalance.
   std::optional<ForceResponse> balance;

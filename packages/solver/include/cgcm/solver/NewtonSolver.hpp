@@ -26,7 +26,8 @@ struct NewtonSettings {
   /// Newton can stall a little above zero; the problem sets this from its
   /// force scale times "Stall Tolerance".
   Real stallTolerance = 0.0;
-  Real relativeStallTolerance = 1e-2;  ///< "Stall Tolerance", relative to the problem's force scale
+  Real relativeStallTolerance = 2e-3;  ///< "Stall Tolerance", relative to the problem's force scale
+  Real stallUpdateTolerance = 0.0;     ///< and the last update below this (problem length scale, e.g. r0/100)
 
   /// Valid parameters of the "Newton" sublist, with defaults and documentation.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -63,7 +64,10 @@ class NewtonSolver {
   /// as |f| falls (switched evolution relaxation), then Newton. Small dt moves
   /// the state downhill like a damped dynamic relaxation, so after a fold of
   /// the displacement-controlled path it settles on a stable branch. Collective.
-  NewtonResult solvePseudoTransient(Vector& u, Real initialTimeStep = 1e-2, int maxSteps = 150);
+  /// No dof moves more than `maxMove` in one pseudo-time step (the update is
+  /// scaled down), so a snapping state cannot jump through the other body.
+  NewtonResult solvePseudoTransient(Vector& u, Real maxMove = 1e300, Real initialTimeStep = 1e-2,
+                                    int maxSteps = 300);
 
  private:
   NewtonResult solveOnCurrentGraph(Vector& u);
