@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench
+.PHONY: demo test build configure deps clean bench paper
 
 deps:
 	@bash scripts/install-deps.sh
@@ -25,6 +25,10 @@ test: build
 
 bench: build
 	@bash bench/run-all.sh $(BUILD_DIR)
+
+# The paper's Fig. 5 and Fig. 6 studies (inputs/paper), plotted into doc/figures.
+paper: build
+	@bash tools/run_paper_figures.sh $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

@@ -250,6 +250,13 @@ void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
     block.nodeSets["equator"] = block.nodeSets.at("bottom");  // the fixed far side
     mesh::append(*m, block, "lower ");
   }
+  // Only the curved (or top) faces interact: the axis is a symmetry line and the
+  // equator planes carry the supports.
+  for (const char* set : {"axis", "equator"}) {
+    mesh::removeFacetsOn(*m, 0, m->nodeSet(set));
+    mesh::removeFacetsOn(*m, 1, m->nodeSet(std::string("lower ") + set));
+  }
+  if (!onSphere) mesh::removeFacetsOn(*m, 1, m->nodeSet("lower side"));
   s.mesh = m;
   s.conditions = {{"axis", 0, 0.0, 0.0},       {"equator", 1, 0.0, -1.0}, {"lower axis", 0, 0.0, 0.0},
                   {"lower equator", 0, 0.0, 0.0}, {"lower equator", 1, 0.0, 0.0}};

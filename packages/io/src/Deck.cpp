@@ -107,8 +107,12 @@ void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& va
   try {
     deck.validateParametersAndSetDefaults(valid);
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
-    // Teuchos' messages name the parameter, its sublist and the valid choices.
-    throw InputError(std::string("invalid input deck:\n") + e.what());
+    // Teuchos' messages name the parameter, its sublist and the valid choices;
+    // drop the source location and throw bookkeeping in front of that.
+    std::string what = e.what();
+    const auto start = what.find("The \"");
+    if (start != std::string::npos) what = what.substr(start);
+    throw InputError("invalid input deck: " + what);
   }
 }
 

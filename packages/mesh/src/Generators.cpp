@@ -201,6 +201,22 @@ void buildSurfaces(Mesh& mesh) {
   }
 }
 
+void removeFacetsOn(Mesh& mesh, int body, const std::vector<LocalIndex>& nodes) {
+  Surface& s = mesh.surfaces.at(body);
+  Surface kept;
+  kept.body = s.body;
+  kept.nodesPerFacet = s.nodesPerFacet;
+  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    const LocalIndex* n = &s.facets[std::size_t(f) * s.nodesPerFacet];
+    bool all = true;
+    for (int a = 0; a < s.nodesPerFacet; ++a) all = all && std::binary_search(nodes.begin(), nodes.end(), n[a]);
+    if (all) continue;
+    kept.facets.insert(kept.facets.end(), n, n + s.nodesPerFacet);
+    kept.facetCells.push_back(s.facetCells[f]);
+  }
+  s = std::move(kept);
+}
+
 void perturbInteriorNodes(Mesh& mesh, Real fraction, unsigned seed) {
   std::set<LocalIndex> boundary;
   for (const auto& s : mesh.surfaces) boundary.insert(s.facets.begin(), s.facets.end());

@@ -46,6 +46,11 @@ void append(Mesh& mesh, const Mesh& other, const std::string& prefix);
 /// all facets used by exactly one cell, oriented outward.
 void buildSurfaces(Mesh& mesh);
 
+/// Removes from the surface of `body` every facet whose nodes all belong to
+/// `nodes` (sorted): symmetry lines and loaded faces that are not physical
+/// surfaces of the interaction.
+void removeFacetsOn(Mesh& mesh, int body, const std::vector<LocalIndex>& nodes);
+
 /// Moves every node not in a boundary node set by a random amount up to
 /// `fraction` of the smallest cell size (deterministic for a given seed):
 /// distorted meshes for patch tests.

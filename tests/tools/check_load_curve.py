@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Checks a cgcm load curve (load_curve.csv) against an analytic limit.
+Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
+
+  check_load_curve.py hertz   CSV --modulus E* --radius R [--tolerance 0.05] [--u-min U]
+      repulsive contact: fits P^(2/3) = k (u - u0) over u >= u-min and
+      compares P = k^(3/2) (u - u0)^(3/2) with Hertz, k_H^(3/2) = (4/3) E* sqrt(R)
+  pulloff CSV --expected P [--tolerance 0.03] [--retraction]
+      minimum of P (over the retraction part: after the largest u) vs the expected value
+  value   CSV --u U --expected P [--tolerance 0.01] [--column P]
+      the column at the state u (first occurrence) vs the expected value
+"""
+import argparse
+import csv
+import math
+import sys
+
+
+def read(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"{path}: no data")
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def hertz(c, a):
+    pts = [(u, p) for u, p in zip(c["u"], c["P"]) if a.u_min <= u <= a.u_max and p > 0]
+    if len(pts) < 4:
+        print("too few contact points")
+        return 1
+    xs = [u for u, _ in pts]
+    ys = [p ** (2.0 / 3.0) for _, p in pts]
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    k = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+    u0 = mx - my / k
+    ratio = k ** 1.5 / ((4.0 / 3.0) * a.modulus * math.sqrt(a.radius))
+    print(f"Hertz fit over {n} points: P = {k ** 1.5:.6g} (u - {u0:.3g})^1.5, ratio to Hertz = {ratio:.5f} "
+          f"(tolerance {a.tolerance})")
+    return 0 if abs(ratio - 1.0) <= a.tolerance else 1
+
+
+def pulloff(c, a):
+    start = 0
+    if a.retraction:
+        start = max(range(len(c["u"])), key=lambda k: c["u"][k])
+    k = min(range(start, len(c["P"])), key=lambda i: c["P"][i])
+    ratio = c["P"][k] / a.expected
+    print(f"P_min = {c['P'][k]:.6g} at u = {c['u'][k]:.5g}; expected {a.expected:.6g}, ratio {ratio:.5f} "
+          f"(tolerance {a.tolerance})")
+    return 0 if abs(ratio - 1.0) <= a.tolerance else 1
+
+
+def value(c, a):
+    for u, v in zip(c["u"], c[a.column]):
+        if abs(u - a.u) <= 1e-9 * max(1.0, abs(u)):
+            ratio = v / a.expected
+            print(f"{a.column}(u = {u:g}) = {v:.6g}; expected {a.expected:.6g}, ratio {ratio:.5f} "
+                  f"(tolerance {a.tolerance})")
+            return 0 if abs(ratio - 1.0) <= a.tolerance else 1
+    print(f"no state at u = {a.u}")
+    return 1
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    h = sub.add_parser("hertz")
+    h.add_argument("csv")
+    h.add_argument("--modulus", type=float, required=True)
+    h.add_argument("--radius", type=float, required=True)
+    h.add_argument("--tolerance", type=float, default=0.05)
+    h.add_argument("--u-min", type=float, default=0.0)
+    h.add_argument("--u-max", type=float, default=float("inf"))
+    p = sub.add_parser("pulloff")
+    p.add_argument("csv")
+    p.add_argument("--expected", type=float, required=True)
+    p.add_argument("--tolerance", type=float, default=0.03)
+    p.add_argument("--retraction", action="store_true")
+    v = sub.add_parser("value")
+    v.add_argument("csv")
+    v.add_argument("--u", type=float, required=True)
+    v.add_argument("--expected", type=float, required=True)
+    v.add_argument("--tolerance", type=float, default=0.01)
+    v.add_argument("--column", default="P")
+    a = ap.parse_args()
+    c = read(a.csv)
+    return {"hertz": hertz, "pulloff": pulloff, "value": value}[a.cmd](c, a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
