@@ -50,6 +50,8 @@ def plot_sweep(runs, label, title, out):
         b.plot(c["u"], c["gap"], lw=1.2, color=line.get_color())
         for k in jumps:
             a.plot(c["u"][k], c["P"][k], "o", mfc="none", color=line.get_color())
+    for ax in (a, b):
+        ax.set_xlim(-0.1, 0.065)  # the window of the paper's figures: adhesion and contact phases
     a.set_xlabel("u / R0")
     a.set_ylabel("P R0 / E0")
     a.axhline(0.0, color="k", lw=0.5)
