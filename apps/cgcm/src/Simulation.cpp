@@ -176,42 +176,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
       return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
     });
   }
-  if (probe) {
-    // At a fold, control the gap instead of u for a while: hold the upper apex
-    // and move it towards the other branch in steps of r0/4, releasing it after
-    // each; the first released state that stays put is on the other branch.
-    const LocalIndex apex = setup.mesh->nodeSet(setup.contact->upperApex).at(0);
-    const int y = setup.mesh->dim - 1;
-    const Real stage = 0.25 * setup.interaction->potential->r0();
-    stepper.setJumpStepLimit(0.1 * setup.interaction->potential->r0());
-    stepper.setJumpControl([&, apex, y, stage](Real p, Vector& state, solver::NewtonResult& res) {
-      const Real towards = p > result.curve.back().u ? -1.0 : 1.0;  // approach: apex moves down
-      const Real a0 = assembler->nodeValue(state, apex, y);
-      Vector held(state), released(state.getMap());
-      res = {};
-      for (int k = 1; k <= 40; ++k) {
-        dirichlet->add({apex}, y, a0 + towards * k * stage, 0.0);
-        dirichlet->impose(p, held);
-        const auto h = newton.solve(held);
-        dirichlet->remove({apex}, y);
-        res.iterations += h.iterations;
-        if (!h.converged) {
-          res.failure = "gap control: " + h.failure;
-          return false;
-        }
-        released.assign(held);
-        auto r = newton.solve(released);
-        res.iterations += r.iterations;
-        if (r.converged && std::abs(probe->gap(released) - probe->gap(held)) < 0.5 * stage) {
-          state.assign(released);
-          res.converged = true;
-          res.residualNorms = r.residualNorms;
-          return true;
-        }
-      }
-      return false;
-    });
-  }
+  if (probe) stepper.setJumpStepLimit(0.1 * setup.interaction->potential->r0());
   const auto runStart = std::chrono::steady_clock::now();
   try {
     stepper.run(u, observe);

@@ -23,20 +23,6 @@ void DirichletConditions::add(const std::vector<LocalIndex>& nodes, int componen
   }
 }
 
-void DirichletConditions::remove(const std::vector<LocalIndex>& nodes, int component) {
-  const Map& owned = *dofs_->ownedMap();
-  for (LocalIndex n : nodes) {
-    if (!dofs_->ownsNode(n)) continue;
-    const LocalIndex lid = owned.getLocalElement(dofs_->dof(n, component));
-    const auto it = std::lower_bound(lids_.begin(), lids_.end(), lid);
-    if (it == lids_.end() || *it != lid) continue;
-    const auto k = it - lids_.begin();
-    lids_.erase(it);
-    offset_.erase(offset_.begin() + k);
-    scale_.erase(scale_.begin() + k);
-  }
-}
-
 void DirichletConditions::applyToResidual(const Vector& u, Real p, Vector& f) const {
   auto uv = u.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto fv = f.getLocalViewHost(Tpetra::Access::ReadWrite);

@@ -34,11 +34,6 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
              "a step that fails or jumps even below this increment marks a fold of the load path "
              "(jump-to-contact / jump-off-contact): the state then jumps to the other stable branch",
              positive);
-  valid->set("Jump Method", "pseudo-transient",
-             "how the state crosses to the other branch at a fold: \"pseudo-transient\" (damped relaxation from the "
-             "last state) or \"gap control\" (two-body contact: hold the apex of the upper body and move it towards "
-             "the other branch in steps of r0/4, releasing it after each)",
-             Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("pseudo-transient", "gap control"))));
   return valid;
 }
 
@@ -53,7 +48,6 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
   s.growth = p.get<double>("Growth Factor");
   s.cutback = p.get<double>("Cutback Factor");
   s.foldIncrement = p.get<double>("Fold Increment");
-  s.jumpMethod = p.get<std::string>("Jump Method");
   if (s.path.size() < 2)
     throw InputError("Loading/Approach Path needs at least two values (start and target), got " +
                      std::to_string(s.path.size()));
@@ -139,15 +133,9 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
           model_->setLoad(pNew);
           trial.assign(u);
           model_->dirichlet().impose(pNew, trial);
-          bool landed;
-          if (jump_ && settings_.jumpMethod == "gap control") {
-            landed = jump_(pNew, trial, info.newton);
-          } else {
-            info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_);
-            // a relaxation that only stalls has not found an equilibrium
-            landed = info.newton.converged && !info.newton.stalled;
-          }
-          if (landed) {
+          info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_);
+          // a relaxation that only stalls has not found an equilibrium
+          if (info.newton.converged && !info.newton.stalled) {
             info.jump = !continuous_ || !continuous_(u, trial);
             increment = settings_.initialIncrement;
             break;

@@ -17,8 +17,6 @@ class DirichletConditions {
   /// Constrains component `component` of every node in `nodes`. A dof
   /// constrained twice keeps the last condition.
   void add(const std::vector<LocalIndex>& nodes, int component, Real offset, Real scale);
-  /// Frees component `component` of the nodes again.
-  void remove(const std::vector<LocalIndex>& nodes, int component);
 
   /// Overwrites the constrained rows of f with u_i - (offset_i + scale_i p).
   void applyToResidual(const Vector& u, Real p, Vector& f) const;

@@ -6,7 +6,6 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <functional>
-#include <string>
 #include <vector>
 
 #include "cgcm/solver/NewtonSolver.hpp"
@@ -25,8 +24,6 @@ struct LoadPathSettings {
   /// displacement-controlled branch has ended at a fold: the state jumps to
   /// the other stable branch (pseudo-transient solve) and the step is marked.
   Real foldIncrement = 1e-4;
-  /// How a fold is crossed: "pseudo-transient" or "gap control" (problems with a gap).
-  std::string jumpMethod = "pseudo-transient";
 
   /// Valid parameters of the "Loading" sublist.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -59,17 +56,11 @@ class LoadStepper {
 
   void setContinuityCheck(ContinuityCheck check) { continuous_ = std::move(check); }
 
-  /// Lands on another stable branch at load p from the converged state in
-  /// `state` (its constrained values already set for p); returns false if it
-  /// cannot. Replaces the default pseudo-transient jump.
-  using JumpControl = std::function<bool(Real p, Vector& state, NewtonResult& result)>;
-  void setJumpControl(JumpControl control) { jump_ = std::move(control); }
   /// Largest move of a dof per pseudo-time step in a pseudo-transient jump.
   void setJumpStepLimit(Real maxMove) { jumpStepLimit_ = maxMove; }
 
  private:
   ContinuityCheck continuous_;
-  JumpControl jump_;
   Real jumpStepLimit_ = 1e300;
   Teuchos::RCP<ModelEvaluator> model_;
   NewtonSolver& newton_;
