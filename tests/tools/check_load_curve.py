@@ -9,6 +9,11 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       minimum of P (over the retraction part: after the largest u) vs the expected value
   value   CSV --u U --expected P [--tolerance 0.01] [--column P]
       the column at the state u (first occurrence) vs the expected value
+  balance CSV [--tolerance 0.03]
+      |P - P_lower| <= tolerance * max |P| over all states (the interaction's force imbalance)
+  jumps   CSV --expected N [--contact-gap G]
+      exactly N states marked as jumps; with --contact-gap, the first jump lands
+      in contact (gap < G) and the last one out of it (gap > G)
 """
 import argparse
 import csv
@@ -63,6 +68,22 @@ def value(c, a):
     return 1
 
 
+def balance(c, a):
+    scale = max(abs(p) for p in c["P"])
+    worst = max(abs(p - q) for p, q in zip(c["P"], c["P_lower"])) / scale
+    print(f"largest |P - P_lower| / max|P| = {worst:.5f} over {len(c['P'])} states (tolerance {a.tolerance})")
+    return 0 if worst <= a.tolerance else 1
+
+
+def jumps(c, a):
+    idx = [k for k, j in enumerate(c["jump"]) if j > 0]
+    print("jumps at u = " + ", ".join(f"{c['u'][k]:.6g} (P {c['P'][k]:.4g}, gap {c['gap'][k]:.4g})" for k in idx))
+    ok = len(idx) == a.expected
+    if ok and a.contact_gap is not None and idx:
+        ok = c["gap"][idx[0]] < a.contact_gap < c["gap"][idx[-1]]
+    return 0 if ok else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -84,9 +105,16 @@ def main():
     v.add_argument("--expected", type=float, required=True)
     v.add_argument("--tolerance", type=float, default=0.01)
     v.add_argument("--column", default="P")
+    b = sub.add_parser("balance")
+    b.add_argument("csv")
+    b.add_argument("--tolerance", type=float, default=0.03)
+    j = sub.add_parser("jumps")
+    j.add_argument("csv")
+    j.add_argument("--expected", type=int, required=True)
+    j.add_argument("--contact-gap", type=float)
     a = ap.parse_args()
     c = read(a.csv)
-    return {"hertz": hertz, "pulloff": pulloff, "value": value}[a.cmd](c, a)
+    return {"hertz": hertz, "pulloff": pulloff, "value": value, "balance": balance, "jumps": jumps}[a.cmd](c, a)
 
 
 if __name__ == "__main__":

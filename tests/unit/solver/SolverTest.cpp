@@ -240,3 +240,62 @@ TEST(Interaction, UndeformedBenchmarkMeshGivesDerjaguinForceOnBothBodies) {
 
 }  // namespace
 }  // namespace cgcm
+
+namespace cgcm {
+namespace {
+
+using Teuchos::ParameterList;
+
+TEST(Newton, BacktrackingLineSearchConverges) {
+  auto d = Teuchos::rcp(new ParameterList("cgcm"));
+  io::applyOverrides(*d, *app::validParameters(),
+                     {"Geometry/Type=block", "Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
+                      "Solver/Newton/Line Search=backtrack"});
+  io::validateDeck(*d, *app::validParameters());
+  auto setup = app::buildProblem(*d);
+  auto comm = Tpetra::getDefaultComm();
+  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, 3));
+  auto assembler = std::make_shared<assembly::Assembler>(dofs, setup.mesh, setup.formulation, setup.material);
+  auto bc = std::make_shared<assembly::DirichletConditions>(dofs);
+  for (const auto& c : setup.conditions) bc->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+  auto model = Teuchos::rcp(new solver::ModelEvaluator(
+      assembler, bc, solver::buildLinearSolver(d->sublist("Solver").sublist("Linear Solver"), comm->getSize(), 3)));
+  solver::NewtonSolver newton(model, solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton")));
+  assembly::Vector u(model->map());
+  model->setLoad(-0.2);  // 20 % in one step from rest: the top cells start at J = 0.2
+  bc->impose(-0.2, u);
+  const auto r = newton.solve(u);
+  ASSERT_TRUE(r.converged) << r.failure;
+  EXPECT_LE(r.iterations, 10);
+  EXPECT_LT(r.residualNorms.back(), 1e-9 * r.residualNorms.front());
+}
+
+TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
+  // Graph built with the sphere far away (no interaction couplings), Jacobian
+  // evaluated with the sphere at the equilibrium gap: the interaction entries
+  // would be dropped, so the evaluation must fail until the graph is refreshed.
+  auto d = Teuchos::rcp(new ParameterList("cgcm"));
+  io::validateDeck(*d, *app::validParameters());
+  auto s = app::buildProblem(*d);
+  auto comm = Tpetra::getDefaultComm();
+  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *s.mesh, 2));
+  auto assembler = std::make_shared<assembly::Assembler>(dofs, s.mesh, s.formulation, s.material);
+  const auto& in = *s.interaction;
+  assembler->setInteraction(
+      std::make_shared<interaction::SurfaceInteraction>(s.mesh->surfaces, in.densities, in.potential, in.options),
+      in.searchRadius);
+  assembly::Vector far(dofs->ownedMap()), near(dofs->ownedMap()), f(dofs->ownedMap());
+  assembly::DirichletConditions lift(dofs);
+  lift.add(s.mesh->nodeSet("upper body"), 1, 0.0, 1.0);
+  lift.impose(1.0, far);  // the sphere one radius higher
+  EXPECT_TRUE(assembler->updateInteractionGraph(far));
+  auto J = assembler->createMatrix();
+  EXPECT_THROW(assembler->evaluate(near, f, J.get()), assembly::GraphOutdatedError);
+  EXPECT_TRUE(assembler->updateInteractionGraph(near));
+  EXPECT_FALSE(assembler->updateInteractionGraph(near));  // nothing new
+  J = assembler->createMatrix();
+  EXPECT_NO_THROW(assembler->evaluate(near, f, J.get()));
+}
+
+}  // namespace
+}  // namespace cgcm
