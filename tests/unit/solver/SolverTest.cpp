@@ -299,3 +299,43 @@ TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
 
 }  // namespace
 }  // namespace cgcm
+
+namespace cgcm {
+namespace {
+
+TEST(ModelEvaluator, ParameterDerivativeMatchesFiniteDifferences) {
+  // DfDp (used by continuation) against FD of the residual in the load parameter.
+  using MEB = Thyra::ModelEvaluatorBase;
+  using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
+  auto d = Teuchos::rcp(new Teuchos::ParameterList("cgcm"));
+  io::applyOverrides(*d, *app::validParameters(), {"Geometry/Type=block", "Problem/Formulation=plane strain"});
+  io::validateDeck(*d, *app::validParameters());
+  System sys(*d);
+  auto x = Thyra::createMember(sys.model->get_x_space());
+  Extract::getTpetraVector(x)->randomize(-0.01, 0.01);
+  auto evalF = [&](double p, const Teuchos::RCP<Thyra::VectorBase<Real>>& f,
+                   const Teuchos::RCP<Thyra::MultiVectorBase<Real>>& dfdp) {
+    auto in = sys.model->createInArgs();
+    in.set_x(x);
+    auto pv = Thyra::createMember(sys.model->get_p_space(0));
+    Thyra::set_ele(0, p, pv.ptr());
+    in.set_p(0, pv);
+    auto out = sys.model->createOutArgs();
+    out.set_f(f);
+    if (!dfdp.is_null()) out.set_DfDp(0, MEB::Derivative<Real>(dfdp, MEB::DERIV_MV_BY_COL));
+    sys.model->evalModel(in, out);
+  };
+  auto fp = Thyra::createMember(sys.model->get_f_space()), fm = Thyra::createMember(sys.model->get_f_space());
+  auto dfdp = Thyra::createMembers(sys.model->get_f_space(), 1);
+  evalF(-0.05 + 1e-6, fp, Teuchos::null);
+  evalF(-0.05 - 1e-6, fm, Teuchos::null);
+  evalF(-0.05, Thyra::createMember(sys.model->get_f_space()), dfdp);
+  Thyra::Vp_StV(fp.ptr(), -1.0, *fm);
+  Thyra::Vt_S(fp.ptr(), 1.0 / 2e-6);
+  Thyra::Vp_StV(fp.ptr(), -1.0, *dfdp->col(0));
+  EXPECT_LT(Thyra::norm_2(*fp), 1e-8 * Thyra::norm_2(*dfdp->col(0)));
+  EXPECT_GT(Thyra::norm_2(*dfdp->col(0)), 1.0);  // one unit entry per loaded dof
+}
+
+}  // namespace
+}  // namespace cgcm

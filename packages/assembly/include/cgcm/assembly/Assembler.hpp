@@ -58,16 +58,11 @@ class Assembler {
   Teuchos::RCP<const Graph> graph();
   /// A new zero matrix on the current graph.
   Teuchos::RCP<Matrix> createMatrix();
-  /// Incremented whenever the graph is rebuilt: matrices of older graphs are stale.
-  int graphVersion() const { return graphVersion_; }
 
   /// Internal force f_int(u) (owned rows, before boundary conditions); if J is
   /// given, also its tangent (J must come from createMatrix() of this graph).
   /// Collective. Throws InvertedElementError on every rank if any cell has J <= 0.
   void evaluate(const Vector& u, Vector& f, Matrix* J);
-
-  /// Current nodal coordinates x = X + u of every overlap node, as imported for the last evaluate().
-  const Vector& overlapDisplacement() const { return *uOverlap_; }
 
   /// Adds the surface interaction (Method 3) to every evaluation. The matrix
   /// graph holds the couplings of all surface elements within `searchRadius`
@@ -114,7 +109,7 @@ class Assembler {
 
   std::vector<std::pair<LocalIndex, LocalIndex>> extraCouplings_;
   Teuchos::RCP<Graph> graph_;
-  int graphVersion_ = 0;
+  int graphVersion_ = 0;  ///< incremented on every rebuild: cached column ids follow it
   int colLidsVersion_ = -1;
 
   std::shared_ptr<interaction::SurfaceInteraction> interaction_;
