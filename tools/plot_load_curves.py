@@ -94,7 +94,7 @@ def main():
         fig, a = plt.subplots(figsize=(6, 4))
         for path in csvs:
             c = read(path)
-            a.plot(c["u"], c["P"], lw=1.2, label=path)
+            a.plot(c["u"], c["P"], lw=1.2, label=os.path.basename(os.path.dirname(os.path.abspath(path))))
             p, u = minimum(c)
             print(f"{path}: P_min = {p:.6e} at u = {u:.6f}")
         a.set_xlabel("u / R0")
