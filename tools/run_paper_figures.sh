@@ -16,7 +16,7 @@ for deck in inputs/paper/*.xml; do
 done
 /usr/bin/python3 tools/plot_load_curves.py --figures doc/figures output/paper
 /usr/bin/python3 tools/plot_md_comparison.py --analytic "$build/bin/cgcm-analytic" --gammaL 50 --gammaW 200 \
-  --curve output/paper/fig6-gammaW-200/load_curve.csv --output doc/figures/md-comparison-gw200-paper-deck.png
+  --curve output/paper/fig6-gammaW-200/load_curve.csv --output doc/figures/md-comparison-gw200.png
 /usr/bin/python3 tools/plot_md_comparison.py --analytic "$build/bin/cgcm-analytic" --gammaL 50 --gammaW 20 \
   --curve output/paper/fig6-gammaW-20/load_curve.csv --output doc/figures/md-comparison-gw20.png
 exit $status
