@@ -339,3 +339,39 @@ TEST(ModelEvaluator, ParameterDerivativeMatchesFiniteDifferences) {
 
 }  // namespace
 }  // namespace cgcm
+
+namespace cgcm {
+namespace {
+
+TEST(LinearSolver, VerbatimStratimikosListIsUsedAndValidated) {
+  // Type = Stratimikos hands the sublist to Stratimikos as is: a Belos GMRES
+  // with an Ifpack2 ILUT preconditioner must solve the clamped block like the default.
+  auto d = deck({"Geometry/Type=block", "Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
+                 "Loading/Approach Path={0, -0.1}", "Loading/Initial Increment=0.05", "Loading/Max Increment=0.05",
+                 "Output/Print Steps=false",
+                 "Output/Directory=" + std::string(CGCM_TEST_OUTPUT) + "/stratimikos",
+                 "Solver/Linear Solver/Type=Stratimikos"});
+  auto& s = d->sublist("Solver").sublist("Linear Solver").sublist("Stratimikos");
+  s.set("Linear Solver Type", "Belos");
+  auto& gmres = s.sublist("Linear Solver Types").sublist("Belos");
+  gmres.set("Solver Type", "Block GMRES");
+  gmres.sublist("Solver Types").sublist("Block GMRES").set("Convergence Tolerance", 1e-12);
+  s.set("Preconditioner Type", "Ifpack2");
+  s.sublist("Preconditioner Types").sublist("Ifpack2").set("Prec Type", "ILUT");
+  std::ostringstream log;
+  const auto custom = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
+  ASSERT_TRUE(custom.completed) << custom.failure;
+  auto reference = deck({"Geometry/Type=block", "Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
+                         "Loading/Approach Path={0, -0.1}", "Loading/Initial Increment=0.05", "Loading/Max Increment=0.05",
+                         "Output/Print Steps=false",
+                         "Output/Directory=" + std::string(CGCM_TEST_OUTPUT) + "/stratimikos-reference"});
+  const auto ref = app::runSimulation(Tpetra::getDefaultComm(), *reference, log);
+  ASSERT_EQ(custom.curve.size(), ref.curve.size());
+  EXPECT_NEAR(custom.curve.back().P, ref.curve.back().P, 1e-8 * std::abs(ref.curve.back().P));
+
+  s.set("Linear Solver Type", "Magic");  // an unknown solver: a clear error before any work
+  EXPECT_THROW(app::runSimulation(Tpetra::getDefaultComm(), *d, log), InputError);
+}
+
+}  // namespace
+}  // namespace cgcm
