@@ -315,4 +315,22 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   return s;
 }
 
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
+  Discretization d;
+  d.dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
+  d.assembler = std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.material);
+  if (setup.interaction) {
+    const auto& in = *setup.interaction;
+    d.assembler->setInteraction(
+        std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities, in.potential, in.options),
+        in.searchRadius);
+  }
+  d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
+  for (const auto& c : setup.conditions)
+    d.dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+  d.model = Teuchos::rcp(new solver::ModelEvaluator(d.assembler, d.dirichlet, std::move(linearSolver)));
+  return d;
+}
+
 }  // namespace cgcm::app

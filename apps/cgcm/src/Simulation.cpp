@@ -97,18 +97,10 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   comm->barrier();
 
-  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim));
-  auto assembler = std::make_shared<assembly::Assembler>(dofs, setup.mesh, setup.formulation, setup.material);
-  if (setup.interaction) {
-    const auto& in = *setup.interaction;
-    assembler->setInteraction(std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities,
-                                                                                in.potential, in.options),
-                              in.searchRadius);
-  }
-  auto dirichlet = std::make_shared<assembly::DirichletConditions>(dofs);
-  for (const auto& c : setup.conditions)
-    dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-  auto model = Teuchos::rcp(new solver::ModelEvaluator(assembler, dirichlet, linearSolver));
+  const Discretization disc = discretize(comm, setup, linearSolver);
+  const auto& dofs = disc.dofs;
+  const auto& assembler = disc.assembler;
+  const auto& model = disc.model;
   solver::NewtonSolver newton(model, newtonSettings);
   std::unique_ptr<ContactProbe> probe;
   if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *setup.mesh, *assembler);

@@ -134,7 +134,6 @@ Teuchos::RCP<Matrix> Assembler::createMatrix() { return Teuchos::rcp(new Matrix(
 void Assembler::buildGraph() {
   // Row lengths: a generous bound from the cell cliques plus extra couplings per row node.
   const Map& overlap = *dofs_->overlapMap();
-  std::vector<std::set<GlobalIndex>> rowCols;  // only used for the bound; cheap at these sizes
   std::size_t maxCliques = 0;
   {
     std::vector<int> cellsPerNode(overlap.getNodeNumElements() / dim_ + 1, 0);

@@ -13,33 +13,28 @@ GaussRule gaussLegendreUnit(int n) {
   rule.points.resize(n);
   rule.weights.resize(n);
   const Real pi = std::acos(-1.0);
+  // P_n(x) and P_n'(x) by the three-term recurrence.
+  auto legendre = [n](Real x, Real& p, Real& dp) {
+    Real p0 = 1.0, p1 = x;
+    for (int k = 2; k <= n; ++k) {
+      const Real p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+      p0 = p1;
+      p1 = p2;
+    }
+    p = p1;
+    dp = n * (x * p1 - p0) / (x * x - 1.0);
+  };
   // Newton iteration on the Legendre polynomial P_n over [-1, 1].
   for (int i = 0; i < (n + 1) / 2; ++i) {
     Real x = std::cos(pi * (i + 0.75) / (n + 0.5));
-    Real dp = 0.0;
+    Real p = 0.0, dp = 0.0;
     for (int it = 0; it < 100; ++it) {
-      Real p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const Real p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      // p1 = P_n(x), p0 = P_{n-1}(x)
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-      const Real dx = p1 / dp;
+      legendre(x, p, dp);
+      const Real dx = p / dp;
       x -= dx;
       if (std::abs(dx) < 1e-16) break;
     }
-    // recompute the derivative at the converged root
-    {
-      Real p0 = 1.0, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const Real p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-    }
+    legendre(x, p, dp);  // the derivative at the converged root
     const Real w = 2.0 / ((1.0 - x * x) * dp * dp);
     // x is the i-th largest root; map [-1, 1] -> [0, 1]
     rule.points[n - 1 - i] = 0.5 * (1.0 + x);

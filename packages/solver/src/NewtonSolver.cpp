@@ -251,9 +251,10 @@ NewtonResult NewtonSolver::solvePseudoTransient(Vector& u, Real maxMove, Real in
   NewtonResult result;
   Real dt = initialTimeStep, fPrevious = -1.0, f0 = -1.0;
   auto space = Thyra::createVectorSpace<Real>(map);
+  Teuchos::RCP<Matrix> J;
   for (int step = 0; step < maxSteps; ++step) {
-    assembler.updateInteractionGraph(x, true);
-    auto J = assembler.createMatrix();
+    // a new matrix only when the interaction couplings outgrew the graph
+    if (assembler.updateInteractionGraph(x, true) || J.is_null()) J = assembler.createMatrix();
     try {
       assembler.evaluate(x, f, J.get());
     } catch (const NumericalError& e) {

@@ -44,14 +44,13 @@ struct System {
 
   explicit System(const ParameterList& d) : setup(app::buildProblem(d)) {
     auto comm = Tpetra::getDefaultComm();
-    dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
-    assembler = std::make_shared<assembly::Assembler>(dofs, setup.mesh, setup.formulation, setup.material);
-    dirichlet = std::make_shared<assembly::DirichletConditions>(dofs);
-    for (const auto& c : setup.conditions)
-      dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-    model = Teuchos::rcp(new solver::ModelEvaluator(
-        assembler, dirichlet, solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"), comm->getSize(),
-                                                     assembly::formulationDim(setup.formulation))));
+    auto disc = app::discretize(comm, setup,
+                                solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"),
+                                                          comm->getSize(), assembly::formulationDim(setup.formulation)));
+    dofs = disc.dofs;
+    assembler = disc.assembler;
+    dirichlet = disc.dirichlet;
+    model = disc.model;
   }
 };
 
@@ -247,19 +246,10 @@ namespace {
 using Teuchos::ParameterList;
 
 TEST(Newton, BacktrackingLineSearchConverges) {
-  auto d = Teuchos::rcp(new ParameterList("cgcm"));
-  io::applyOverrides(*d, *app::validParameters(),
-                     {"Geometry/Type=block", "Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
-                      "Solver/Newton/Line Search=backtrack"});
-  io::validateDeck(*d, *app::validParameters());
-  auto setup = app::buildProblem(*d);
-  auto comm = Tpetra::getDefaultComm();
-  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, 3));
-  auto assembler = std::make_shared<assembly::Assembler>(dofs, setup.mesh, setup.formulation, setup.material);
-  auto bc = std::make_shared<assembly::DirichletConditions>(dofs);
-  for (const auto& c : setup.conditions) bc->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-  auto model = Teuchos::rcp(new solver::ModelEvaluator(
-      assembler, bc, solver::buildLinearSolver(d->sublist("Solver").sublist("Linear Solver"), comm->getSize(), 3)));
+  auto d = deck({"Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped", "Solver/Newton/Line Search=backtrack"});
+  System sys(*d);
+  auto& model = sys.model;
+  auto& bc = sys.dirichlet;
   solver::NewtonSolver newton(model, solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton")));
   assembly::Vector u(model->map());
   model->setLoad(-0.2);  // 20 % in one step from rest: the top cells start at J = 0.2
@@ -276,14 +266,10 @@ TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
   // would be dropped, so the evaluation must fail until the graph is refreshed.
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
   io::validateDeck(*d, *app::validParameters());
-  auto s = app::buildProblem(*d);
-  auto comm = Tpetra::getDefaultComm();
-  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *s.mesh, 2));
-  auto assembler = std::make_shared<assembly::Assembler>(dofs, s.mesh, s.formulation, s.material);
-  const auto& in = *s.interaction;
-  assembler->setInteraction(
-      std::make_shared<interaction::SurfaceInteraction>(s.mesh->surfaces, in.densities, in.potential, in.options),
-      in.searchRadius);
+  System sys(*d);
+  const auto& s = sys.setup;
+  const auto& dofs = sys.dofs;
+  const auto& assembler = sys.assembler;
   assembly::Vector far(dofs->ownedMap()), near(dofs->ownedMap()), f(dofs->ownedMap());
   assembly::DirichletConditions lift(dofs);
   lift.add(s.mesh->nodeSet("upper body"), 1, 0.0, 1.0);

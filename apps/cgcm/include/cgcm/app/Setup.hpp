@@ -12,6 +12,7 @@
 #include "cgcm/interaction/SurfaceInteraction.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
+#include "cgcm/solver/ModelEvaluator.hpp"
 
 namespace cgcm::app {
 
@@ -72,5 +73,18 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 
 assembly::Formulation parseFormulation(const std::string& name);
+
+/// The discrete problem of a set-up: dof distribution, assembler (with the
+/// interaction when there is one), Dirichlet conditions and ModelEvaluator.
+struct Discretization {
+  Teuchos::RCP<assembly::DofMap> dofs;
+  std::shared_ptr<assembly::Assembler> assembler;
+  std::shared_ptr<assembly::DirichletConditions> dirichlet;
+  Teuchos::RCP<solver::ModelEvaluator> model;
+};
+
+/// Distributes and assembles `setup` on `comm`. Collective.
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver);
 
 }  // namespace cgcm::app

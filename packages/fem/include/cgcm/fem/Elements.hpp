@@ -25,10 +25,34 @@ namespace cgcm::fem {
 namespace detail {
 /// 1/√3: abscissa of the two-point Gauss rule on [−1, 1].
 constexpr Real gauss2 = 0.57735026918962576451;
+
+/// shapeAtQp of every element E: its shape functions at quadrature point q.
+template <class E>
+struct ShapeAtQuadraturePoints {
+  template <int NumNodes, int Dim>
+  KOKKOS_INLINE_FUNCTION static void shapeAtQp(int q, Real (&N)[NumNodes], Real (&dN)[NumNodes][Dim],
+                                               Real& weight) {
+    Real xi[Dim];
+    E::quadraturePoint(q, xi, weight);
+    E::shape(xi, N, dN);
+  }
+};
+
+/// The tensor-product two-point Gauss rule of Quad4 and Hex8, its points
+/// ordered like the nodes (the q-th point nearest node q), weights 1.
+template <class E>
+struct GaussPointsAtNodes : ShapeAtQuadraturePoints<E> {
+  template <int Dim>
+  KOKKOS_INLINE_FUNCTION static void quadraturePoint(int q, Real (&xi)[Dim], Real& weight) {
+    E::parentCoordinates(q, xi);
+    for (int i = 0; i < Dim; ++i) xi[i] *= gauss2;
+    weight = 1.0;
+  }
+};
 }  // namespace detail
 
 /// Bilinear quadrilateral, 2×2 Gauss quadrature.
-struct Quad4 {
+struct Quad4 : detail::GaussPointsAtNodes<Quad4> {
   static constexpr int numNodes = 4;
   static constexpr int numQp = 4;
   static constexpr int dim = 2;
@@ -49,23 +73,10 @@ struct Quad4 {
       dN[a][1] = 0.25 * p[1] * s;
     }
   }
-
-  /// Gauss points ordered like the nodes (q-th point nearest node q); weights 1.
-  KOKKOS_INLINE_FUNCTION static void quadraturePoint(int q, Real (&xi)[dim], Real& weight) {
-    parentCoordinates(q, xi);
-    for (int i = 0; i < dim; ++i) xi[i] *= detail::gauss2;
-    weight = 1.0;
-  }
-
-  KOKKOS_INLINE_FUNCTION static void shapeAtQp(int q, Real (&N)[numNodes], Real (&dN)[numNodes][dim], Real& weight) {
-    Real xi[dim];
-    quadraturePoint(q, xi, weight);
-    shape(xi, N, dN);
-  }
 };
 
 /// Trilinear hexahedron, 2×2×2 Gauss quadrature.
-struct Hex8 {
+struct Hex8 : detail::GaussPointsAtNodes<Hex8> {
   static constexpr int numNodes = 8;
   static constexpr int numQp = 8;
   static constexpr int dim = 3;
@@ -90,23 +101,10 @@ struct Hex8 {
       dN[a][2] = 0.125 * p[2] * s * t;
     }
   }
-
-  /// Gauss points ordered like the nodes (q-th point nearest node q); weights 1.
-  KOKKOS_INLINE_FUNCTION static void quadraturePoint(int q, Real (&xi)[dim], Real& weight) {
-    parentCoordinates(q, xi);
-    for (int i = 0; i < dim; ++i) xi[i] *= detail::gauss2;
-    weight = 1.0;
-  }
-
-  KOKKOS_INLINE_FUNCTION static void shapeAtQp(int q, Real (&N)[numNodes], Real (&dN)[numNodes][dim], Real& weight) {
-    Real xi[dim];
-    quadraturePoint(q, xi, weight);
-    shape(xi, N, dN);
-  }
 };
 
 /// Linear tetrahedron, one-point (centroid) quadrature.
-struct Tet4 {
+struct Tet4 : detail::ShapeAtQuadraturePoints<Tet4> {
   static constexpr int numNodes = 4;
   static constexpr int numQp = 1;
   static constexpr int dim = 3;
@@ -130,12 +128,6 @@ struct Tet4 {
   KOKKOS_INLINE_FUNCTION static void quadraturePoint(int /*q*/, Real (&xi)[dim], Real& weight) {
     for (int i = 0; i < dim; ++i) xi[i] = 0.25;
     weight = 1.0 / 6.0;
-  }
-
-  KOKKOS_INLINE_FUNCTION static void shapeAtQp(int q, Real (&N)[numNodes], Real (&dN)[numNodes][dim], Real& weight) {
-    Real xi[dim];
-    quadraturePoint(q, xi, weight);
-    shape(xi, N, dN);
   }
 };
 
