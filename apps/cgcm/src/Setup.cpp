@@ -74,6 +74,11 @@ RCP<const ParameterList> validParameters() {
                atLeast(2.0));
   auto refinement = rcp(new Teuchos::EnhancedNumberValidator<int>(0, 6));
   geometry.set("Mesh Refinement", 0, "level 0 (about 1400 nodes) .. 6; each level halves every cell", refinement);
+  geometry.set("Contact Zone Size", 0.5,
+               "radial extent of the finest cells around the axis, in sphere radii (0.02 .. 0.85): 20 cells on "
+               "the half-space and 16 on the sphere at level 0. Smaller zones resolve smaller contacts (large "
+               "gammaL) with the same number of cells",
+               between(0.02, 0.85));
   auto& block = geometry.sublist("Block", false,
                                  "Type = block: corner at the origin; symmetry rollers on the faces x = 0, y = 0 "
                                  "(and z = 0 in 3D); the face at the far end of the last axis moves by the load u");
@@ -120,11 +125,23 @@ RCP<const ParameterList> validParameters() {
   inter.set("beta0", 1.0, "reference particle density of both bodies", atLeast(1e-300));
   inter.set("Quadrature Points", 4, "Gauss points per surface segment", intAtLeast(1));
   inter.set("Cutoff", 10.0, "interaction cutoff in units of r0: farther points are skipped", atLeast(1.0));
+  inter.set("Cutoff Taper", 0.2,
+            "fraction of the cutoff over which the traction is blended smoothly (C1) to zero, 0 .. 0.9; "
+            "0 is a sharp cutoff, whose residual jumps when points cross it",
+            between(0.0, 0.9));
   inter.set("Search Radius Factor", 2.0, "matrix-graph search radius / cutoff (> 1)", atLeast(1.01));
 
   valid->sublist("Loading", false,
                  "displacement control: the load parameter u is the prescribed displacement, stepped along the path")
       .setParameters(*solver::LoadPathSettings::validParameters());
+  valid->sublist("Loading")
+      .set("Approach Adhesion Scale", 1.0,
+           "(0, 1]: a way into strongly adhesive contact without its jump-to-contact. The first segment of the "
+           "Approach Path runs with the interaction energy epsilon scaled by this factor (w and sigma_max scale "
+           "with it, gammaW is divided by it); at the first waypoint the scale then grows to 1 with u held, and "
+           "the rest of the path runs at full strength. The first segment and the ramp go to preparation.csv, "
+           "load_curve.csv starts at the first waypoint. 1: off",
+           between(1e-6, 1.0));
 
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");
   solverList.sublist("Newton", false, "Newton's method (NOX) at each load step")
@@ -174,10 +191,12 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
                                                                               : interaction::Formulation::PlaneStrain;
   s.options.quadraturePoints = in.get<int>("Quadrature Points");
   s.options.cutoff = in.get<double>("Cutoff") * phys.r0;
+  s.options.cutoffTaper = in.get<double>("Cutoff Taper");
   s.searchRadius = in.get<double>("Search Radius Factor") * s.options.cutoff;
 
   // Derived scales (THEORY sections 2, 4, 5), for the run's report.
   const Real rS0 = phys.r0 / std::pow(15.0, 1.0 / 6.0);
+  const Real taperStart = (1.0 - s.options.cutoffTaper) * s.options.cutoff;
   const Real w = interaction::LennardJones::workFactor() * beta0 * beta0 * phys.epsilon * std::pow(phys.r0, 4);
   const Real sigmaMax = interaction::LennardJones::peakTractionFactor() * beta0 * beta0 * phys.epsilon *
                         std::pow(phys.r0, 3);
@@ -197,8 +216,9 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   report.push_back(o.str());
   o.str("");
   o << "potential " << s.potential->name() << ": r_S0 = " << rS0 << ", w = " << w << ", sigma_max = " << sigmaMax
-    << ", cutoff = " << s.options.cutoff << ", |T(cutoff)|/sigma_max = "
-    << std::abs(s.potential->traction(s.options.cutoff, beta0, beta0)) / sigmaMax;
+    << ", cutoff = " << s.options.cutoff << " (taper from " << taperStart << "), |T(taper start)|/sigma_max = "
+    << std::abs(s.potential->traction(taperStart, beta0, beta0)) / sigmaMax << ", work removed by the cutoff = "
+    << 100.0 * interaction::neglectedWorkFraction(*s.potential, taperStart, s.options.cutoff) << " % of w";
   report.push_back(o.str());
   o.str("");
   o << "Lennard-Jones scales: Tabor mu = " << tabor << ", Maugis-Dugdale lambda (theory) = " << lambda
@@ -229,6 +249,8 @@ void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
   sphere.radius = R0;
   sphere.centerY = R0 + rS0;
   sphere.refinement = level;
+  const Real zone = g.get<double>("Contact Zone Size");
+  sphere.fineAngle = 0.8 * zone;  // the fine cells of both bodies are then equally long
   sphere.name = "sphere";
   auto m = std::make_shared<mesh::Mesh>(mesh::quarterDisk(sphere));
   auto& upper = m->nodeSets["upper body"];
@@ -239,12 +261,13 @@ void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
     lower.centerY = -R2;
     lower.lowerHalf = false;
     lower.refinement = level;
+    lower.fineAngle = std::min(0.8 * zone * R0 / R2, 0.69);
     lower.name = "second sphere";
     mesh::append(*m, mesh::quarterDisk(lower), "lower ");
   } else {
     mesh::HalfSpaceSpec h;
     h.width = h.depth = g.get<double>("Half-Space Size") * R0;
-    h.fineLength = 0.5 * R0;
+    h.fineLength = zone * R0;
     h.refinement = level;
     mesh::Mesh block = mesh::halfSpaceBlock(h);
     block.nodeSets["equator"] = block.nodeSets.at("bottom");  // the fixed far side
@@ -322,9 +345,9 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
   d.assembler = std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.material);
   if (setup.interaction) {
     const auto& in = *setup.interaction;
-    d.assembler->setInteraction(
-        std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities, in.potential, in.options),
-        in.searchRadius);
+    d.interaction =
+        std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities, in.potential, in.options);
+    d.assembler->setInteraction(d.interaction, in.searchRadius);
   }
   d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
   for (const auto& c : setup.conditions)

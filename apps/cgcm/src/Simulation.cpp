@@ -71,6 +71,39 @@ class ContactProbe {
   LocalIndex upper_, lower_;
 };
 
+// Grows the interaction strength from `from` to 1 with the Dirichlet data
+// held, in adaptive steps; throws NumericalError if a step fails below 1e-4
+// of the range.
+void rampInteractionStrength(interaction::SurfaceInteraction& interaction, solver::NewtonSolver& newton, Vector& u,
+                             Real from, bool print, std::ostream& log) {
+  Vector trial(u.getMap());
+  Real s = from, ds = (1.0 - from) / 8.0;
+  const Real dsMin = 1e-4 * (1.0 - from);
+  while (s < 1.0) {
+    const Real next = (1.0 - s) < 1.05 * ds ? 1.0 : s + ds;
+    interaction.setStrength(next);
+    trial.assign(u);
+    const auto r = newton.solve(trial);
+    if (!r.converged || r.stalled) {
+      ds *= 0.5;
+      if (ds < dsMin) {
+        interaction.setStrength(s);
+        throw NumericalError("adhesion ramp failed between scales " + std::to_string(s) + " and " +
+                             std::to_string(next) + " (" + r.failure + ")");
+      }
+      continue;
+    }
+    u.assign(trial);
+    s = next;
+    if (print) {
+      char line[160];
+      std::snprintf(line, sizeof line, "ramp      adhesion scale = %.6f  newton %2d\n", s, r.iterations);
+      log << line << std::flush;
+    }
+    if (r.iterations <= 4) ds *= 1.5;
+  }
+}
+
 }  // namespace
 
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
@@ -83,6 +116,13 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Everything that can be rejected is checked before any work starts.
   ProblemSetup setup = buildProblem(deck);
   const auto loading = solver::LoadPathSettings::fromParameters(deck.sublist("Loading"));
+  const Real approachScale = deck.sublist("Loading").get<double>("Approach Adhesion Scale");
+  if (approachScale < 1.0 && !setup.interaction)
+    throw InputError("Loading/Approach Adhesion Scale < 1 needs an interaction between bodies (Geometry/Type = "
+                     "\"sphere on half-space\" or \"sphere on sphere\")");
+  if (approachScale < 1.0 && loading.path.size() < 3)
+    throw InputError("Loading/Approach Adhesion Scale < 1 needs an Approach Path of at least three waypoints: the "
+                     "approach at reduced adhesion ends at the second, the recorded path starts there");
   auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
   newtonSettings.stallTolerance = newtonSettings.relativeStallTolerance * setup.forceScale;
   if (setup.interaction) newtonSettings.stallUpdateTolerance = 0.1 * setup.interaction->potential->r0();
@@ -116,7 +156,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   if (probe) columns.insert(columns.end(), {"gap", "contact_radius", "P_lower"});
   columns.insert(columns.end(), {"newton_iterations", "jump", "residual", "stalled", "cutbacks"});
   std::unique_ptr<io::CsvWriter> csv;
-  if (root) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+  if (root && approachScale < 1.0) csv = std::make_unique<io::CsvWriter>(dir + "/preparation.csv", columns);
+  if (root && approachScale == 1.0) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+  bool preparing = approachScale < 1.0;  // states of the reduced-adhesion approach are not part of the result
 
   RunResult result;
   Vector u(model->map());
@@ -140,8 +182,10 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
       Plower = setup.balance->sign * assembler->sumOverNodes(f, setup.mesh->nodeSet(setup.balance->nodeSet),
                                                              setup.balance->component);
     }
-    result.curve.push_back(pt);
-    result.stalledSteps += info.newton.stalled ? 1 : 0;
+    if (!preparing) {
+      result.curve.push_back(pt);
+      result.stalledSteps += info.newton.stalled ? 1 : 0;
+    }
     if (!root) return;
     std::vector<double> row{double(info.step), info.load, P};
     if (probe) row.insert(row.end(), {pt.gap, pt.contactRadius, Plower});
@@ -150,8 +194,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     csv->row(row);
     if (printSteps) {
       char line[240];
-      std::snprintf(line, sizeof line, "step %4d  u = %+.6e  P = %+.6e%s  newton %2d  |f| = %.2e%s%s%s\n",
-                    info.step, info.load, P, probe ? ("  gap = " + std::to_string(pt.gap)).c_str() : "",
+      std::snprintf(line, sizeof line, "%s %4d  u = %+.6e  P = %+.6e%s  newton %2d  |f| = %.2e%s%s%s\n",
+                    preparing ? "approach" : "step", info.step, info.load, P, probe ? ("  gap = " + std::to_string(pt.gap)).c_str() : "",
                     info.newton.iterations, res, info.newton.stalled ? " (stalled)" : "",
                     info.cutbacks ? ("  (" + std::to_string(info.cutbacks) + " cut-backs)").c_str() : "",
                     info.jump ? "  JUMP" : "");
@@ -159,19 +203,37 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     }
   };
 
-  solver::LoadStepper stepper(model, newton, loading);
-  if (probe) {
-    // A state that moved much more than the prescribed displacement left its branch.
-    const Real floor = 0.05 * setup.interaction->potential->r0();
-    stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
-      const Real du = std::abs(model->load() - result.curve.back().u);
-      return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
+  Real lastLoad = loading.path.front();
+  auto runPath = [&](const solver::LoadPathSettings& settings) {
+    solver::LoadStepper stepper(model, newton, settings);
+    if (probe) {
+      // A state that moved much more than the prescribed displacement left its branch.
+      const Real floor = 0.05 * setup.interaction->potential->r0();
+      stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
+        const Real du = std::abs(model->load() - lastLoad);
+        return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
+      });
+      stepper.setJumpStepLimit(0.1 * setup.interaction->potential->r0());
+    }
+    stepper.run(u, [&](const solver::StepInfo& info, const Vector& uSolved) {
+      observe(info, uSolved);
+      lastLoad = info.load;
     });
-  }
-  if (probe) stepper.setJumpStepLimit(0.1 * setup.interaction->potential->r0());
+  };
   const auto runStart = std::chrono::steady_clock::now();
   try {
-    stepper.run(u, observe);
+    if (preparing) {
+      solver::LoadPathSettings approach = loading;
+      approach.path.resize(2);
+      disc.interaction->setStrength(approachScale);
+      runPath(approach);
+      rampInteractionStrength(*disc.interaction, newton, u, approachScale, root && printSteps, log);
+      preparing = false;
+      if (root) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+    }
+    solver::LoadPathSettings recorded = loading;
+    if (approachScale < 1.0) recorded.path.erase(recorded.path.begin());
+    runPath(recorded);
     result.completed = true;
   } catch (const NumericalError& e) {
     result.failure = e.what();

@@ -35,20 +35,55 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
     throw InputError("surface interaction: quadraturePoints must be in [1, 64], got " +
                      std::to_string(options_.quadraturePoints));
   if (std::isnan(options_.cutoff)) throw InputError("surface interaction: cutoff is NaN");
+  if (!(options_.cutoffTaper >= 0.0 && options_.cutoffTaper < 1.0))
+    throw InputError("surface interaction: cutoffTaper must be in [0, 1), got " +
+                     std::to_string(options_.cutoffTaper));
   rule_ = gaussLegendreUnit(options_.quadraturePoints);
   cutoff_ = options_.cutoff > 0.0 ? options_.cutoff : 10.0 * potential_->r0();
+  taperStart_ = std::isfinite(cutoff_) ? (1.0 - options_.cutoffTaper) * cutoff_ : cutoff_;
 
   summary_.cutoff = cutoff_;
+  summary_.taperStart = taperStart_;
   Real maxProduct = 0.0;
   for (std::size_t k = 0; k < densities_.size(); ++k)
     for (std::size_t l = 0; l < densities_.size(); ++l)
       if (k != l) maxProduct = std::max(maxProduct, densities_[k] * densities_[l]);
   summary_.cutoffTraction =
-      std::isfinite(cutoff_) ? maxProduct * std::abs(potential_->halfSpace(cutoff_)) : 0.0;
+      std::isfinite(cutoff_) ? maxProduct * std::abs(potential_->halfSpace(taperStart_)) : 0.0;
+  summary_.neglectedWorkFraction = neglectedWorkFraction(*potential_, taperStart_, cutoff_);
   summary_.resultant.assign(surfaces_.size(), {0.0, 0.0});
   summary_.minDistance = std::numeric_limits<Real>::infinity();
   search_.resize(surfaces_.size());
   for (auto& s : search_) s = makeClosestPointSearch(2, options_.search);
+}
+
+Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real cutoff) {
+  const Real w = potential.adhesionWorkCoefficient();
+  if (!(w > 0.0) || !std::isfinite(cutoff)) return 0.0;
+  const SurfaceInteraction::Law unit{&potential, 1.0, taperStart, cutoff};
+  auto removed = [&](Real r) {  // Phi/beta (1 - S)
+    Real T, dT, Tc, dTc;
+    potential.halfSpaceWithDerivative(r, T, dT);
+    unit(r, Tc, dTc);
+    return T - Tc;
+  };
+  // Simpson on the taper, and on [r_c, inf) after r = r_c / t (the integrand vanishes at t = 0).
+  const int n = 200;
+  const Real h = (cutoff - taperStart) / n;
+  Real taper = 0.0, tail = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const Real c = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    if (h > 0.0) taper += c * removed(taperStart + i * h);
+    const Real t = Real(i) / n;
+    if (i > 0) tail += c * removed(cutoff / t) * cutoff / (t * t);
+  }
+  return -(taper * h / 3.0 + tail / (3.0 * n)) / w;
+}
+
+void SurfaceInteraction::setStrength(Real strength) {
+  if (!(strength > 0.0) || !std::isfinite(strength))
+    throw InputError("surface interaction: strength must be finite and > 0, got " + std::to_string(strength));
+  strength_ = strength;
 }
 
 void SurfaceInteraction::updatePairs(const Real* coords) {
@@ -101,7 +136,7 @@ PairState SurfaceInteraction::evaluatePair(const Real* coords, const Interaction
     os << "surface interaction: segment " << p.facet << " of body " << p.body << " has zero length";
     throw NumericalError(os.str());
   }
-  const Law law{potential_.get(), densities_[p.body] * densities_[p.otherBody]};
+  const Law law = this->law(p.body, p.otherBody);
   const Real xi = rule_.points[p.qp], w = rule_.weights[p.qp];
   Real(*K)[8] = withTangent ? out.K : nullptr;
   const PairState st = options_.formulation == Formulation::Axisymmetric

@@ -102,7 +102,9 @@ Mesh quarterDisk(const QuarterDiskSpec& s) {
   // Radial layers of the curved patches, finest at the surface: t in [0, 1] from core to surface.
   const Real core = 0.5;
   const int nR = scaled(14, L);
-  const std::vector<Real> depth = geometric(1.0, (0.025 / (1.0 - core)) / (1 << L), nR);  // from the surface
+  // the first layer is as thick as the fine cells along the surface are long
+  const Real fineCell = s.fineAngle / scaled(16, L);
+  const std::vector<Real> depth = geometric(1.0, fineCell / (1.0 - core), nR);  // from the surface
   std::vector<Real> t(nR + 1);
   for (int k = 0; k <= nR; ++k) t[k] = 1.0 - depth[nR - k];
 
@@ -172,7 +174,7 @@ Mesh halfSpaceBlock(const HalfSpaceSpec& s) {
   if (s.refinement < 0 || s.refinement > 6) throw InputError("Geometry/Mesh Refinement must be 0 .. 6");
   const int L = s.refinement;
   const std::vector<Real> xs = fineThenGeometric(s.width, s.fineLength, scaled(20, L), scaled(10, L));
-  const std::vector<Real> ds = geometric(s.depth, 0.025 / (1 << L), scaled(20, L));
+  const std::vector<Real> ds = geometric(s.depth, s.fineLength / scaled(20, L), scaled(20, L));
   RectangleSpec r;
   r.x0 = 0.0;
   r.y0 = s.topY - s.depth;

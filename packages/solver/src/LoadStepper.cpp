@@ -70,6 +70,37 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
   return s;
 }
 
+bool LoadStepper::jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrevious, Vector& trial,
+                                    StepInfo& info) {
+  model_->setLoad(p);
+  int iterations = 0;
+  auto relax = [&](Real push, const Vector* direction, Real largest) {
+    trial.assign(u);
+    if (push > 0.0) trial.update(push / largest, *direction, 1.0);
+    model_->dirichlet().impose(p, trial);
+    info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_);
+    iterations += info.newton.iterations;
+    info.newton.iterations = iterations;
+    // a relaxation that only stalls has not found an equilibrium
+    if (!info.newton.converged || info.newton.stalled) return false;
+    info.jump = !continuous_ || !continuous_(u, trial);
+    return true;
+  };
+  // Right at a fold the residual is tiny and a relaxation from u hardly
+  // moves. Near the fold the secant of the last two states is the mode that
+  // loses stability, so the state is pushed along it first, by growing amounts.
+  if (uPrevious != nullptr && jumpStepLimit_ < 1e300) {
+    Vector direction(u.getMap());
+    direction.update(1.0, u, -1.0, *uPrevious, 0.0);
+    const Real largest = direction.normInf();
+    if (largest > 0.0)
+      for (Real push : {1.0, 4.0}) {
+        if (relax(push * jumpStepLimit_, &direction, largest) && info.jump) return true;
+      }
+  }
+  return relax(0.0, nullptr, 1.0);
+}
+
 void LoadStepper::run(Vector& u, const Observer& observer) {
   const auto& path = settings_.path;
   Vector trial(u.getMap());
@@ -129,14 +160,8 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
         if (converged) info.newton.failure = "the state left its branch";
         ++info.cutbacks;
         if (increment <= settings_.foldIncrement) {
-          // The branch ends here: let the state settle on the other stable branch.
-          model_->setLoad(pNew);
-          trial.assign(u);
-          model_->dirichlet().impose(pNew, trial);
-          info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_);
-          // a relaxation that only stalls has not found an equilibrium
-          if (info.newton.converged && !info.newton.stalled) {
-            info.jump = !continuous_ || !continuous_(u, trial);
+          // The branch ends here: the state must settle on the other stable branch.
+          if (jumpToOtherBranch(pNew, u, havePrevious ? &uPrevious : nullptr, trial, info)) {
             increment = settings_.initialIncrement;
             break;
           }

@@ -50,13 +50,14 @@ double evaluationSeconds(const assembly::Assembler& a) {
   return a.timings().residual + a.timings().jacobian + a.timings().interaction;
 }
 
-// Converged when |f| is below `tolerance` and has stopped decreasing: none
-// of the last three iterations halved it. Method 3 on piecewise-linear
-// surfaces has a residual that jumps wherever a closest point crosses a
-// concave corner of the other surface, so in contact Newton ends up
-// alternating between nearby states at a small |f| instead of reaching zero.
-// The last update must also be small (below `updateTolerance` in every dof):
-// near a fold, where no equilibrium is close, the iterates jump around instead.
+// Converged when Newton is caught in a cycle below `tolerance`: the last
+// four norms alternate between two values (equal to 1 %) and the last update
+// is small (below `updateTolerance` in every dof). Method 3 on piecewise-
+// linear surfaces has a residual that jumps where a closest point crosses a
+// concave corner of the other surface (its direction turns by the corner
+// angle); a state next to such a switch sends Newton back and forth between
+// its two sides. Near a fold, where no equilibrium is close, the norms wander
+// instead and the state is not accepted.
 class StallTest : public NOX::StatusTest::Generic {
  public:
   StallTest(Real tolerance, Real updateTolerance) : tolerance_(tolerance), updateTolerance_(updateTolerance) {}
@@ -67,8 +68,8 @@ class StallTest : public NOX::StatusTest::Generic {
     history_.push_back(now);
     const std::size_t n = history_.size();
     if (n >= 4 && now <= tolerance_) {
-      const Real reference = history_[n - 4];
-      if (std::min({history_[n - 3], history_[n - 2], now}) > 0.5 * reference) {
+      auto same = [](Real a, Real b) { return std::abs(a - b) <= 0.01 * std::max(a, b); };
+      if (same(now, history_[n - 3]) && same(history_[n - 2], history_[n - 4])) {
         auto dx = s.getSolutionGroup().getX().clone(NOX::ShapeCopy);
         dx->update(1.0, s.getSolutionGroup().getX(), -1.0, s.getPreviousSolutionGroup().getX(), 0.0);
         if (dx->norm(NOX::Abstract::Vector::MaxNorm) <= updateTolerance_) status_ = NOX::StatusTest::Converged;
@@ -79,7 +80,7 @@ class StallTest : public NOX::StatusTest::Generic {
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& o, int indent) const override {
     for (int i = 0; i < indent; ++i) o << ' ';
-    return o << status_ << "Stall below " << tolerance_ << "\n";
+    return o << status_ << "Cycle below " << tolerance_ << "\n";
   }
 
  private:
@@ -106,10 +107,11 @@ Teuchos::RCP<const Teuchos::ParameterList> NewtonSettings::validParameters() {
   valid->set("Max Iterations", 25, "Newton iterations before the load step is cut back", iters);
   valid->set("Print Iterations", false, "print |f| after every Newton iteration");
   valid->set("Stall Tolerance", 2e-3,
-             "contact problems: accept a state whose |f| stopped decreasing (not halved in three iterations) below "
-             "this fraction of the adhesion force scale 2 pi w R; the residual of Method 3 jumps where closest "
-             "points cross concave corners of the discretised surface, so Newton can stall there. The load curve's "
-             "residual column records the |f| of every state; 0 disables",
+             "contact problems: accept a state where Newton cycles between two values of |f| (equal to 1 % over "
+             "four iterations, last update below r0/10) below this fraction of the adhesion force scale 2 pi w R. "
+             "The residual of Method 3 jumps where closest points cross concave corners of the discretised "
+             "surface, and Newton can alternate across such a switch. Such states are marked in the load curve's "
+             "stalled column, with their |f| in the residual column; 0 disables",
              positive);
   return valid;
 }

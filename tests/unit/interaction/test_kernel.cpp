@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "cgcm/interaction/Method3Kernel.hpp"
@@ -21,6 +22,8 @@ namespace {
 using Fad = Sacado::Fad::SFad<Real, 8>;
 
 constexpr Real kBeta1 = 1.5, kBeta2 = 0.8;
+constexpr Real kPiForTest = 3.14159265358979323846;
+constexpr Real kNoCutoff = std::numeric_limits<Real>::infinity();
 
 struct Case {
   std::string name;
@@ -50,7 +53,7 @@ void residual(const Real z[8], Real xi, Real w, const SurfaceInteraction::Law& l
 
 template <Formulation F>
 void checkCase(const Case& c, const PairPotential& pot) {
-  const SurfaceInteraction::Law law{&pot, kBeta1 * kBeta2};
+  const SurfaceInteraction::Law law{&pot, kBeta1 * kBeta2, kNoCutoff, kNoCutoff};
   const GaussRule rule = gaussLegendreUnit(4);
   Real worstFd = 0.0, worstAd = 0.0;
   for (int q = 0; q < rule.size(); ++q) {
@@ -149,7 +152,7 @@ TEST(Method3Kernel, SignAndMagnitudeForParallelSegments) {
   // rbar = +y (from the lower surface to the upper point), n = -y: the force
   // applied to the upper body, -f, is +T ds in y (repulsive for T > 0).
   const LennardJones lj(1.0, 1.0);
-  const SurfaceInteraction::Law law{&lj, 1.0};
+  const SurfaceInteraction::Law law{&lj, 1.0, kNoCutoff, kNoCutoff};
   for (Real h : {0.5, 1.0}) {
     const Real z[8] = {0.0, h, 1.0, h, 5.0, 0.0, -5.0, 0.0};
     Real f[4];
@@ -160,4 +163,55 @@ TEST(Method3Kernel, SignAndMagnitudeForParallelSegments) {
     EXPECT_NEAR(-(f[1] + f[3]), T, 1e-14 * std::abs(T));  // ds = 1, w = 1
     EXPECT_NEAR(f[0] + f[2], 0.0, 1e-15);
   }
+}
+
+TEST(Method3Kernel, CutoffTaperIsContinuouslyDifferentiable) {
+  // T S(r) with the C1 taper on [1.6, 2]: T and dT/dr continuous at both ends,
+  // dT/dr the derivative of T inside the band, and T = 0 from the cutoff on.
+  const LennardJones lj(1.0, 1.0);
+  const SurfaceInteraction::Law law{&lj, kBeta1 * kBeta2, 1.6, 2.0};
+  const SurfaceInteraction::Law sharp{&lj, kBeta1 * kBeta2, kNoCutoff, kNoCutoff};
+  auto T = [&](const SurfaceInteraction::Law& l, Real r) {
+    Real t, dt;
+    l(r, t, dt);
+    return std::pair<Real, Real>{t, dt};
+  };
+  const Real eps = 1e-9;
+  const auto below = T(law, 1.6 - eps), above = T(law, 1.6 + eps), unTapered = T(sharp, 1.6);
+  EXPECT_EQ(below.first, T(sharp, 1.6 - eps).first);
+  EXPECT_NEAR(above.first, T(sharp, 1.6 + eps).first, 1e-15);
+  EXPECT_NEAR(above.second, unTapered.second, 1e-7);  // C1: the slopes differ by O(eps)
+  const auto atCutoff = T(law, 2.0 - eps);
+  EXPECT_NEAR(atCutoff.first, 0.0, 1e-12);
+  EXPECT_NEAR(atCutoff.second, 0.0, 1e-7);
+  EXPECT_EQ(T(law, 2.0).first, 0.0);
+  EXPECT_EQ(T(law, 2.5).second, 0.0);
+  Real worst = 0.0;
+  for (Real r = 1.62; r < 2.0; r += 0.02) {
+    const Real h = 1e-6, fd = (T(law, r + h).first - T(law, r - h).first) / (2 * h);
+    worst = std::max(worst, std::abs(T(law, r).second - fd) / std::abs(unTapered.second));
+  }
+  EXPECT_LT(worst, 1e-7);
+  // strictly between the untapered traction and zero inside the band
+  const Real mid = T(law, 1.8).first, full = T(sharp, 1.8).first;
+  EXPECT_GT(mid / full, 0.0);
+  EXPECT_LT(mid / full, 1.0);
+  EXPECT_NEAR(mid / full, 0.5, 1e-12);  // S(1/2) = 1/2
+}
+
+TEST(SurfaceInteractionCutoff, NeglectedWorkOfTheTaperedCutoff) {
+  // Lennard-Jones: Phi/beta ~ -(pi/3) r0^6 / r^3 far out, so a sharp cutoff
+  // at r_c removes (pi/6) r0^6 / r_c^2 of w/(beta1 beta2) = (pi/8) 15^(1/3) r0^4.
+  const LennardJones lj(1.0, 1.0);
+  const Real w = lj.adhesionWorkCoefficient();
+  const Real rc = 10.0;
+  const Real farField = (kPiForTest / 6.0) / (rc * rc) / w;
+  const Real sharp = neglectedWorkFraction(lj, rc, rc);
+  EXPECT_NEAR(sharp, farField, 1e-3 * farField);  // the r^-9 term adds 1e-6 relative
+  // the taper removes more, but less than a sharp cutoff at its start
+  const Real tapered = neglectedWorkFraction(lj, 0.8 * rc, rc);
+  EXPECT_GT(tapered, sharp);
+  EXPECT_LT(tapered, neglectedWorkFraction(lj, 0.8 * rc, 0.8 * rc));
+  EXPECT_EQ(neglectedWorkFraction(RepulsiveLennardJones(1.0, 1.0), 8.0, 10.0), 0.0);
+  EXPECT_EQ(neglectedWorkFraction(lj, kNoCutoff, kNoCutoff), 0.0);
 }

@@ -130,8 +130,9 @@ TEST(SurfaceInteraction, CountsCutoffAndCouplings) {
   EXPECT_EQ(s.numQuadraturePoints, nqp);
   EXPECT_EQ(s.numPairs + s.numBeyondCutoff, nqp);
   EXPECT_GT(s.numBeyondCutoff, 0);
-  // cutoffTraction = |T(r_c)|
-  EXPECT_NEAR(s.cutoffTraction, std::abs(lj->halfSpace(1.5)), 1e-15);
+  // cutoffTraction = |T| where the taper starts, 0.8 r_c
+  EXPECT_NEAR(s.taperStart, 1.2, 1e-15);
+  EXPECT_NEAR(s.cutoffTraction, std::abs(lj->halfSpace(1.2)), 1e-15);
   for (const InteractionPair& p : si.pairs()) EXPECT_NE(p.body, p.otherBody);
 
   // every coupling an evaluation produces is in the graph of a larger radius,

@@ -156,6 +156,42 @@ TEST(Benchmark, HalfSpaceBlockIsGradedTowardsTheContactZone) {
   EXPECT_GT(m.coord(top.back(), 0) - m.coord(top[top.size() - 2], 0), 1.0);
 }
 
+TEST(Benchmark, ContactZoneSetsTheFineCellsAlongAndUnderTheSurface) {
+  // A smaller fine zone shrinks the surface cells and the first layer under
+  // them alike: 20 (half-space) and 16 (sphere) cells over the zone at level 0.
+  for (Real zone : {0.5, 0.1}) {
+    HalfSpaceSpec h;
+    h.fineLength = zone;
+    const Mesh block = halfSpaceBlock(h);
+    EXPECT_GT(cellMeasures(block).second, 0.0);
+    EXPECT_NEAR(cellMeasures(block).first, 64.0, 1e-9);
+    const auto& top = block.nodeSet("top");
+    EXPECT_NEAR(block.coord(top[1], 0) - block.coord(top[0], 0), zone / 20, 1e-12);
+    EXPECT_NEAR(block.coord(top[20], 0), zone, 1e-12);
+    const LocalIndex apex = block.nodeSet("apex").at(0);
+    const LocalIndex below = apex - LocalIndex(top.size());  // the node under the apex, one row down
+    EXPECT_NEAR(block.coord(apex, 1) - block.coord(below, 1), zone / 20, 1e-12);
+
+    QuarterDiskSpec d;
+    d.fineAngle = 0.8 * zone;
+    const Mesh disk = quarterDisk(d);
+    EXPECT_GT(cellMeasures(disk).second, 0.0);
+    EXPECT_NEAR(cellMeasures(disk).first, M_PI / 4, 0.01);  // the coarse cells away from the zone are longer
+    // the surface segment at the apex and the apex's neighbour below it on the axis
+    const LocalIndex tip = disk.nodeSet("apex").at(0);
+    Real shortest = 1e300, step = 1e300;
+    for (LocalIndex e = 0; e < disk.surfaces[0].numFacets(); ++e) {
+      const LocalIndex a = disk.surfaces[0].facets[2 * e], b = disk.surfaces[0].facets[2 * e + 1];
+      if (a == tip || b == tip)
+        shortest = std::hypot(disk.coord(a, 0) - disk.coord(b, 0), disk.coord(a, 1) - disk.coord(b, 1));
+    }
+    for (LocalIndex n : disk.nodeSet("axis"))
+      if (n != tip) step = std::min(step, std::abs(disk.coord(n, 1) - disk.coord(tip, 1)));
+    EXPECT_NEAR(shortest, 0.8 * zone / 16, 1e-3 * zone);  // a chord of the arc
+    EXPECT_NEAR(step, 0.8 * zone / 16, 1e-12);
+  }
+}
+
 TEST(Benchmark, GradingsFillTheirLength) {
   const auto g = geometric(2.0, 0.01, 30);
   EXPECT_EQ(g.size(), 31u);

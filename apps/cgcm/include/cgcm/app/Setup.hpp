@@ -79,6 +79,7 @@ assembly::Formulation parseFormulation(const std::string& name);
 struct Discretization {
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Assembler> assembler;
+  std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the assembler's, or null
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   Teuchos::RCP<solver::ModelEvaluator> model;
 };

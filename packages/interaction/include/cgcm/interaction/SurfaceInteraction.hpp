@@ -33,6 +33,12 @@ struct SurfaceInteractionOptions {
   /// the other body are skipped. <= 0 selects the default 10 r0; infinity
   /// disables pruning.
   Real cutoff = 0.0;
+  /// Fraction of the cutoff over which the traction is blended to zero:
+  /// T is multiplied by a C1 smoothstep on [(1 - taper) r_c, r_c], so the
+  /// residual and its tangent stay continuous when a point crosses r_c (a
+  /// sharp cutoff makes the residual jump by T(r_c) da there, and Newton
+  /// stalls at that level in wide adhesive contacts). 0: sharp cutoff.
+  Real cutoffTaper = 0.2;
   SearchMethod search = SearchMethod::Tree;  ///< closest-point search structure
 };
 
@@ -61,8 +67,12 @@ struct PairContribution {
 /// Counts and diagnostics of the last updatePairs / evaluate.
 struct InteractionSummary {
   Real cutoff = 0.0;          ///< absolute cutoff used
-  Real cutoffTraction = 0.0;  ///< |T(r_c)| for the pair of bodies with the largest density product: the
-                              ///< largest traction neglected
+  Real taperStart = 0.0;      ///< distance where the taper starts, (1 - cutoffTaper) r_c
+  Real cutoffTraction = 0.0;  ///< |T| at the taper start for the pair of bodies with the largest density
+                              ///< product: the largest traction the cutoff changes
+  /// Part of the work of adhesion that the taper and cutoff remove,
+  /// -integral of T (1 - S) dr from r_S0 to infinity, over w (0 without adhesion).
+  Real neglectedWorkFraction = 0.0;
   LocalIndex numQuadraturePoints = 0;   ///< (point, other body) combinations searched
   LocalIndex numPairs = 0;              ///< within the cutoff (evaluated)
   LocalIndex numBeyondCutoff = 0;       ///< skipped by the cutoff
@@ -72,6 +82,11 @@ struct InteractionSummary {
   /// to it, sum over its nodes of -f_C (last evaluate; components x, y).
   std::vector<std::array<Real, 2>> resultant;
 };
+
+/// Part of the work of adhesion w that a cutoff r_c with a taper from
+/// taperStart removes: -integral of Phi/beta (1 - S) dr over w (0 when the
+/// potential has no adhesion or r_c is infinite).
+Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real cutoff);
 
 class SurfaceInteraction {
  public:
@@ -137,16 +152,38 @@ class SurfaceInteraction {
 
   const InteractionSummary& summary() const { return summary_; }
 
-  /// Traction law of the bodies k, l: T(r) = beta_k beta_l Phi(r)/beta.
+  /// Traction law of the bodies k, l: T(r) = beta_k beta_l Phi(r)/beta S(r),
+  /// with the cutoff taper S = 1 below taperStart, 1 - 3 s^2 + 2 s^3 with
+  /// s = (r - taperStart)/(cutoff - taperStart) up to the cutoff, 0 beyond.
   struct Law {
     const PairPotential* potential;
     Real betaProduct;
+    Real taperStart;
+    Real cutoff;
     void operator()(Real r, Real& T, Real& dT) const {
       potential->halfSpaceWithDerivative(r, T, dT);
       T *= betaProduct;
       dT *= betaProduct;
+      if (r >= cutoff) {
+        T = dT = 0.0;
+        return;
+      }
+      if (r <= taperStart) return;
+      const Real width = cutoff - taperStart, s = (r - taperStart) / width;
+      const Real S = 1.0 - s * s * (3.0 - 2.0 * s), dS = -6.0 * s * (1.0 - s) / width;
+      dT = dT * S + T * dS;
+      T *= S;
     }
   };
+  /// The law between bodies k and l.
+  Law law(int k, int l) const {
+    return Law{potential_.get(), strength_ * densities_[k] * densities_[l], taperStart_, cutoff_};
+  }
+
+  /// Scales every traction by `strength` > 0 (the potential's epsilon times
+  /// strength: w and sigma_max scale with it, r_S0 does not). Default 1.
+  void setStrength(Real strength);
+  Real strength() const { return strength_; }
 
  private:
   void beginEvaluation();
@@ -158,6 +195,8 @@ class SurfaceInteraction {
   SurfaceInteractionOptions options_;
   GaussRule rule_;
   Real cutoff_ = 0.0;
+  Real taperStart_ = 0.0;
+  Real strength_ = 1.0;
   std::vector<std::unique_ptr<ClosestPointSearch>> search_;
   std::vector<InteractionPair> pairs_;
   InteractionSummary summary_;

@@ -20,7 +20,8 @@ struct QuarterDiskSpec {
   Real centerY = 0.0;     ///< centre on the axis x = 0
   bool lowerHalf = true;  ///< true: the quarter below the centre (apex pointing down)
   int refinement = 0;     ///< each level halves every cell
-  Real fineAngle = 0.4;   ///< polar angle from the apex over which cells are finest
+  Real fineAngle = 0.4;   ///< polar angle from the apex over which cells are finest (16 cells at level 0,
+                          ///< also the thickness of the first layer under the surface)
   int body = 0;
   std::string name = "sphere";
 };
@@ -35,7 +36,8 @@ struct HalfSpaceSpec {
   Real depth = 8.0;       ///< below the surface y = topY
   Real topY = 0.0;
   int refinement = 0;
-  Real fineLength = 0.5;  ///< radial extent of the finest surface cells
+  Real fineLength = 0.5;  ///< radial extent of the finest surface cells (20 at level 0, also the
+                          ///< thickness of the first layer under the surface)
   int body = 0;
   std::string name = "half-space";
 };

@@ -56,10 +56,17 @@ class LoadStepper {
 
   void setContinuityCheck(ContinuityCheck check) { continuous_ = std::move(check); }
 
-  /// Largest move of a dof per pseudo-time step in a pseudo-transient jump.
+  /// Length scale of a jump: the largest move of a dof per pseudo-time step
+  /// in a pseudo-transient relaxation and the first push along the branch's
+  /// secant (unset: no pushes, the relaxation starts from the last state).
   void setJumpStepLimit(Real maxMove) { jumpStepLimit_ = maxMove; }
 
  private:
+  /// At a fold at load p: finds an equilibrium on another branch from the
+  /// last state u (uPrevious: the state before it, or null). Fills trial and
+  /// info; false if none was found.
+  bool jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrevious, Vector& trial, StepInfo& info);
+
   ContinuityCheck continuous_;
   Real jumpStepLimit_ = 1e300;
   Teuchos::RCP<ModelEvaluator> model_;

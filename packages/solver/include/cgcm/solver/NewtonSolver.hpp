@@ -23,11 +23,11 @@ struct NewtonSettings {
   /// Accept an iterate whose |f| stopped decreasing below this force (0: never).
   /// Method 3 on piecewise-linear surfaces has a residual that jumps where a
   /// closest point moves across a concave corner of the other surface, so
-  /// Newton can stall a little above zero; the problem sets this from its
+  /// Newton can cycle a little above zero (see the stall test in NewtonSolver.cpp); the problem sets this from its
   /// force scale times "Stall Tolerance".
   Real stallTolerance = 0.0;
   Real relativeStallTolerance = 2e-3;  ///< "Stall Tolerance", relative to the problem's force scale
-  Real stallUpdateTolerance = 0.0;     ///< and the last update below this (problem length scale, e.g. r0/100)
+  Real stallUpdateTolerance = 0.0;     ///< and the last update below this (problem length scale, e.g. r0/10)
 
   /// Valid parameters of the "Newton" sublist, with defaults and documentation.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -42,7 +42,7 @@ struct NewtonResult {
   std::string failure;              ///< why it did not converge
   double seconds = 0.0;             ///< wall time of the whole solve
   double evaluationSeconds = 0.0;   ///< part of it spent in residual/tangent evaluations
-  bool stalled = false;             ///< accepted at a stall below the stall tolerance
+  bool stalled = false;             ///< accepted in a cycle below the stall tolerance
   bool graphOutdated = false;       ///< the last attempt met interaction entries outside the graph
   int graphRebuilds = 0;            ///< graph rebuilds during this solve
 };
