@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench paper
+.PHONY: demo test build configure deps clean bench paper jkr-study
 
 deps:
 	@bash scripts/install-deps.sh
@@ -29,6 +29,11 @@ bench: build
 # The paper's Fig. 5 and Fig. 6 studies (inputs/paper), plotted into doc/figures.
 paper: build
 	@bash tools/run_paper_figures.sh $(BUILD_DIR)
+
+# The JKR end of the pull-off force: lambda = 3 on finer meshes and at two
+# gammaL, against the Lennard-Jones sphere reference (output/validation/jkr-study).
+jkr-study: build
+	@bash tools/run_jkr_study.sh $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

@@ -79,17 +79,19 @@ void rampInteractionStrength(interaction::SurfaceInteraction& interaction, solve
   Vector trial(u.getMap());
   Real s = from, ds = (1.0 - from) / 8.0;
   const Real dsMin = 1e-4 * (1.0 - from);
+  std::string failure;
   while (s < 1.0) {
     const Real next = (1.0 - s) < 1.05 * ds ? 1.0 : s + ds;
     interaction.setStrength(next);
     trial.assign(u);
     const auto r = newton.solve(trial);
     if (!r.converged || r.stalled) {
+      failure = r.stalled ? "Newton cycle" : r.failure;
       ds *= 0.5;
       if (ds < dsMin) {
         interaction.setStrength(s);
         throw NumericalError("adhesion ramp failed between scales " + std::to_string(s) + " and " +
-                             std::to_string(next) + " (" + r.failure + ")");
+                             std::to_string(next) + " (" + failure + ")");
       }
       continue;
     }

@@ -82,6 +82,8 @@ bool LoadStepper::jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrev
     iterations += info.newton.iterations;
     info.newton.iterations = iterations;
     // a relaxation that only stalls has not found an equilibrium
+    if (info.newton.converged && info.newton.stalled)
+      info.newton.failure = "the relaxation ended in a Newton cycle, not at an equilibrium";
     if (!info.newton.converged || info.newton.stalled) return false;
     info.jump = !continuous_ || !continuous_(u, trial);
     return true;
