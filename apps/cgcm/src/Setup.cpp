@@ -138,9 +138,9 @@ RCP<const ParameterList> validParameters() {
       .set("Approach Adhesion Scale", 1.0,
            "(0, 1]: a way into strongly adhesive contact without its jump-to-contact. The first segment of the "
            "Approach Path runs with the interaction energy epsilon scaled by this factor (w and sigma_max scale "
-           "with it, gammaW is divided by it); at the first waypoint the scale then grows to 1 with u held, and "
-           "the rest of the path runs at full strength. The first segment and the ramp go to preparation.csv, "
-           "load_curve.csv starts at the first waypoint. 1: off",
+           "with it, gammaW is divided by it); at the end of that segment (the second waypoint) the scale grows "
+           "to 1 with u held, and the rest of the path runs at full strength. The first segment goes to "
+           "preparation.csv, the ramp to the log, and load_curve.csv starts at the second waypoint. 1: off",
            between(1e-6, 1.0));
 
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");

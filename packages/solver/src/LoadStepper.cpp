@@ -78,7 +78,10 @@ bool LoadStepper::jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrev
     trial.assign(u);
     if (push > 0.0) trial.update(push / largest, *direction, 1.0);
     model_->dirichlet().impose(p, trial);
-    info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_);
+    // a pushed state past the fold lands within a few dozen pseudo steps
+    // (at gammaW = 20, 44 pseudo steps and Newton iterations together); the
+    // unpushed one, the last resort, gets the default
+    info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_, 1e-2, push > 0.0 ? 100 : 300);
     iterations += info.newton.iterations;
     info.newton.iterations = iterations;
     // a relaxation that only stalls has not found an equilibrium
