@@ -36,8 +36,9 @@ for c in "${cases[@]}"; do
   ref=$("$build/bin/cgcm-analytic" ljsphere --mu "$mu" --pulloff 2>/dev/null | tail -1 | cut -d, -f2)
   lambda=$(sed -n 's/.*lambda (theory) = \([0-9.e+-]*\),.*/\1/p' "$out/$name.log")
   md=$("$build/bin/cgcm-analytic" pulloff --model md --lambda "$lambda" 2>/dev/null | sed -n 's/^load,\([^,]*\),.*/\1/p')
-  ratio=$(awk -v p="${pmin:-nan}" -v s="$twopiwR" 'BEGIN { print 2 * p / s }')
-  printf '%-22s %7.4f %7.4f %7s %11.4f %10.4f %10.4f\n' "$name" "$mu" "$lambda" "$nodes" "$ratio" "$ref" "$md"
+  ratio=stopped
+  [ -n "$pmin" ] && ratio=$(awk -v p="$pmin" -v s="$twopiwR" 'BEGIN { printf "%.4f", 2 * p / s }')
+  printf '%-22s %7.4f %7.4f %7s %11s %10.4f %10.4f\n' "$name" "$mu" "$lambda" "$nodes" "$ratio" "$ref" "$md"
   echo "$name,$mu,$lambda,$nodes,$ratio,$ref,$md" >> "$out/table.csv"
 done
 /usr/bin/python3 tools/plot_jkr_limit.py --analytic "$build/bin/cgcm-analytic" --table "$out/table.csv" \

@@ -192,6 +192,10 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   s.options.quadraturePoints = in.get<int>("Quadrature Points");
   s.options.cutoff = in.get<double>("Cutoff") * phys.r0;
   s.options.cutoffTaper = in.get<double>("Cutoff Taper");
+  if ((1.0 - s.options.cutoffTaper) * in.get<double>("Cutoff") < 2.0)
+    throw InputError("Interaction/Cutoff Taper = " + std::to_string(s.options.cutoffTaper) +
+                     " with Interaction/Cutoff = " + std::to_string(in.get<double>("Cutoff")) +
+                     " starts the taper below 2 r0, in the range of the repulsion; need (1 - taper) * cutoff >= 2");
   s.searchRadius = in.get<double>("Search Radius Factor") * s.options.cutoff;
 
   // Derived scales (THEORY sections 2, 4, 5), for the run's report.

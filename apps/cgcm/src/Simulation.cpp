@@ -157,9 +157,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   std::vector<std::string> columns{"step", "u", "P"};
   if (probe) columns.insert(columns.end(), {"gap", "contact_radius", "P_lower"});
   columns.insert(columns.end(), {"newton_iterations", "jump", "residual", "stalled", "cutbacks"});
-  std::unique_ptr<io::CsvWriter> csv;
-  if (root && approachScale < 1.0) csv = std::make_unique<io::CsvWriter>(dir + "/preparation.csv", columns);
-  if (root && approachScale == 1.0) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+  // Both files exist from the start, so a run that stops early never leaves an older run's curve behind.
+  std::unique_ptr<io::CsvWriter> curveCsv, preparationCsv;
+  if (root) curveCsv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+  if (root && approachScale < 1.0)
+    preparationCsv = std::make_unique<io::CsvWriter>(dir + "/preparation.csv", columns);
   bool preparing = approachScale < 1.0;  // states of the reduced-adhesion approach are not part of the result
 
   RunResult result;
@@ -193,7 +195,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (probe) row.insert(row.end(), {pt.gap, pt.contactRadius, Plower});
     row.insert(row.end(), {double(info.newton.iterations), info.jump ? 1.0 : 0.0, res,
                            info.newton.stalled ? 1.0 : 0.0, double(info.cutbacks)});
-    csv->row(row);
+    (preparing ? preparationCsv : curveCsv)->row(row);
     if (printSteps) {
       char line[240];
       std::snprintf(line, sizeof line, "%s %4d  u = %+.6e  P = %+.6e%s  newton %2d  |f| = %.2e%s%s%s\n",
@@ -222,16 +224,28 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
       lastLoad = info.load;
     });
   };
-  const auto runStart = std::chrono::steady_clock::now();
+  auto runStart = std::chrono::steady_clock::now();
+  assembly::AssemblyTimings timingsBefore = assembler->timings();
   try {
     if (preparing) {
       solver::LoadPathSettings approach = loading;
       approach.path.resize(2);
       disc.interaction->setStrength(approachScale);
       runPath(approach);
+      const Real gapBefore = probe ? probe->gap(u) : 0.0;
       rampInteractionStrength(*disc.interaction, newton, u, approachScale, root && printSteps, log);
+      const Real gapChange = probe ? std::abs(probe->gap(u) - gapBefore) : 0.0;
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+      if (root && printSteps) {
+        char line[200];
+        std::snprintf(line, sizeof line, "cgcm: preparation (approach and ramp) %.3f s; the ramp moved the gap by %.3g r0\n",
+                      seconds, gapChange / setup.interaction->potential->r0());
+        log << line;
+      }
       preparing = false;
-      if (root) csv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
+      // the summary's time split is that of the recorded path
+      runStart = std::chrono::steady_clock::now();
+      timingsBefore = assembler->timings();
     }
     solver::LoadPathSettings recorded = loading;
     if (approachScale < 1.0) recorded.path.erase(recorded.path.begin());
@@ -243,18 +257,20 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   result.newtonSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   const auto& t = assembler->timings();
-  result.assemblySeconds = t.residual + t.jacobian;
-  result.interactionSeconds = t.interaction;
+  result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
+  result.interactionSeconds = t.interaction - timingsBefore.interaction;
 
-  // Summary: minimum force, jumps, time split.
-  if (root && !result.curve.empty()) {
-    const auto minIt = std::min_element(result.curve.begin(), result.curve.end(),
-                                        [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
+  // Summary: minimum force, jumps, time split (also when the run stopped before the recorded path).
+  if (root) {
     std::ofstream sum(dir + "/summary.txt");
     char buf[256];
-    std::snprintf(buf, sizeof buf, "P_min = %.10g at u = %.10g (step %d)\n", minIt->P, minIt->u, minIt->step);
-    sum << buf;
-    if (printSteps) log << "cgcm: " << buf;
+    if (!result.curve.empty()) {
+      const auto minIt = std::min_element(result.curve.begin(), result.curve.end(),
+                                          [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
+      std::snprintf(buf, sizeof buf, "P_min = %.10g at u = %.10g (step %d)\n", minIt->P, minIt->u, minIt->step);
+      sum << buf;
+      if (printSteps) log << "cgcm: " << buf;
+    }
     for (const auto& pt : result.curve)
       if (pt.jump) {
         std::snprintf(buf, sizeof buf, "jump at step %d: u = %.10g, P = %.10g\n", pt.step, pt.u, pt.P);

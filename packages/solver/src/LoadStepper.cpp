@@ -99,9 +99,8 @@ bool LoadStepper::jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrev
     direction.update(1.0, u, -1.0, *uPrevious, 0.0);
     const Real largest = direction.normInf();
     if (largest > 0.0)
-      for (Real push : {1.0, 4.0}) {
-        if (relax(push * jumpStepLimit_, &direction, largest) && info.jump) return true;
-      }
+      for (Real push : {1.0, 4.0})
+        if (relax(push * jumpStepLimit_, &direction, largest)) return true;  // on either branch
   }
   return relax(0.0, nullptr, 1.0);
 }
@@ -166,7 +165,9 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
         ++info.cutbacks;
         if (increment <= settings_.foldIncrement) {
           // The branch ends here: the state must settle on the other stable branch.
-          if (jumpToOtherBranch(pNew, u, havePrevious ? &uPrevious : nullptr, trial, info)) {
+          // the secant is the direction of motion only if the last step went the same way
+          const bool secant = havePrevious && (pNew - p) * (p - pPrevious) > 0.0;
+          if (jumpToOtherBranch(pNew, u, secant ? &uPrevious : nullptr, trial, info)) {
             increment = settings_.initialIncrement;
             break;
           }

@@ -20,11 +20,12 @@ struct NewtonSettings {
   Real absoluteTolerance = 1e-12;  ///< on ||f|| (force units)
   int maxIterations = 25;
   bool printIterations = false;
-  /// Accept an iterate whose |f| stopped decreasing below this force (0: never).
-  /// Method 3 on piecewise-linear surfaces has a residual that jumps where a
-  /// closest point moves across a concave corner of the other surface, so
-  /// Newton can cycle a little above zero (see the stall test in NewtonSolver.cpp); the problem sets this from its
-  /// force scale times "Stall Tolerance".
+  /// Accept an iterate where |f| cycles between two values below this force
+  /// (0: never). Method 3 on piecewise-linear surfaces has a residual that
+  /// jumps where a closest point moves across a concave corner of the other
+  /// surface, so Newton can alternate across such a switch (the stall test in
+  /// NewtonSolver.cpp). The problem sets this from its force scale times
+  /// "Stall Tolerance".
   Real stallTolerance = 0.0;
   Real relativeStallTolerance = 2e-3;  ///< "Stall Tolerance", relative to the problem's force scale
   Real stallUpdateTolerance = 0.0;     ///< and the last update below this (problem length scale, e.g. r0/10)
