@@ -231,6 +231,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
       solver::LoadPathSettings approach = loading;
       approach.path.resize(2);
       disc.interaction->setStrength(approachScale);
+      newton.setStallTolerance(approachScale * newtonSettings.stallTolerance);  // the adhesion force scales too
       runPath(approach);
       const Real gapBefore = probe ? probe->gap(u) : 0.0;
       rampInteractionStrength(*disc.interaction, newton, u, approachScale, root && printSteps, log);
@@ -243,6 +244,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
         log << line;
       }
       preparing = false;
+      newton.setStallTolerance(newtonSettings.stallTolerance);
       // the summary's time split is that of the recorded path
       runStart = std::chrono::steady_clock::now();
       timingsBefore = assembler->timings();

@@ -60,6 +60,10 @@ class NewtonSolver {
   /// Rebuilds the Jacobian operator (after the matrix graph changed).
   void resetJacobian();
 
+  /// The force below which a Newton cycle is accepted (NewtonSettings::stallTolerance),
+  /// e.g. scaled with a weakened interaction.
+  void setStallTolerance(Real tolerance) { settings_.stallTolerance = tolerance; }
+
   /// Pseudo-transient continuation from u (whose constrained dofs already hold
   /// their values): x <- x - (J + D/dt)^-1 f with D = |diag J| and dt growing
   /// as |f| falls (switched evolution relaxation), then Newton. Small dt moves
