@@ -117,6 +117,38 @@ void checkGlobalTangent(Formulation form) {
 TEST(SurfaceInteraction, GlobalTangentPlaneStrain) { checkGlobalTangent(Formulation::PlaneStrain); }
 TEST(SurfaceInteraction, GlobalTangentAxisymmetric) { checkGlobalTangent(Formulation::Axisymmetric); }
 
+TEST(SurfaceInteraction, StrengthScalesForcesAndTangents) {
+  // setStrength(s) is epsilon -> s epsilon: every f and K scale by s.
+  TwoBodies tb = curvedPair(0.0, 0.75);
+  auto lj = std::make_shared<LennardJones>(1.0, 1.0);
+  SurfaceInteractionOptions opt;
+  opt.cutoff = 1.5;
+  SurfaceInteraction si(tb.surfaces, {1.0, 1.3}, lj, opt);
+  si.updatePairs(tb.coords);
+  std::vector<PairContribution> full, weak;
+  si.evaluate(tb.coords, full);
+  si.setStrength(0.3);
+  EXPECT_EQ(si.strength(), 0.3);
+  si.evaluate(tb.coords, weak);
+  ASSERT_EQ(full.size(), weak.size());
+  ASSERT_GT(full.size(), 50u);
+  Real worst = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < full.size(); ++i) {
+    for (int a = 0; a < 4; ++a) {
+      worst = std::max(worst, std::abs(weak[i].f[a] - 0.3 * full[i].f[a]));
+      scale = std::max(scale, std::abs(full[i].f[a]));
+      for (int b = 0; b < 8; ++b) {
+        worst = std::max(worst, std::abs(weak[i].K[a][b] - 0.3 * full[i].K[a][b]));
+        scale = std::max(scale, std::abs(full[i].K[a][b]));
+      }
+    }
+  }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(worst, 1e-14 * scale);  // rounding only
+  EXPECT_THROW(si.setStrength(0.0), InputError);
+  EXPECT_THROW(si.setStrength(-1.0), InputError);
+}
+
 TEST(SurfaceInteraction, CountsCutoffAndCouplings) {
   TwoBodies tb = curvedPair(0.0, 0.8);
   auto lj = std::make_shared<LennardJones>(1.0, 1.0);
