@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "Numerics.hpp"
 #include "cgcm/core/Error.hpp"
 
 namespace cgcm::analytic {
@@ -578,7 +579,7 @@ LjSphereCurve ljSphereRetraction(Real mu, const LjSphereOptions& opt) {
   // Rebuilding the rings shifts P slightly (by the change of the
   // discretisation error), so the minimum is located again on rings centred
   // at the edge of the smallest sample: the load is bracketed at the local
-  // step d and the bracket shrunk by successive parabolic interpolation.
+  // step d and minimised over the bracket (Brent).
   {
     const Real d = std::fmin(samples[kMin - 1].delta - samples[kMin].delta,
                              samples[kMin].delta - samples[kMin + 1].delta);
@@ -636,25 +637,21 @@ LjSphereCurve ljSphereRetraction(Real mu, const LjSphereOptions& opt) {
       }
     }
     if (!(mid.load <= hi.load && mid.load <= lo.load)) return out;
-    for (int round = 0; round < 8; ++round) {
-      const Real x0 = hi.delta, x1 = mid.delta, x2 = lo.delta;
-      const Real d01 = (mid.load - hi.load) / (x1 - x0);
-      const Real d12 = (lo.load - mid.load) / (x2 - x1);
-      const Real c2 = (d12 - d01) / (x2 - x0);
-      if (!(c2 > 0)) break;
-      const Real xv = 0.5 * (x0 + x1) - d01 / (2 * c2);
-      // Stop when the vertex is within 1e-4 d of the middle, or leaves the
-      // bracket (which a parabola through a bracketed minimum cannot do
-      // unless rounding dominates).
-      if (!(xv < x0 && xv > x2) || std::fabs(xv - x1) < 1e-4 * d) break;
-      Probe v;
-      if (!probeAt(mid, xv, v)) break;
-      if (v.load <= mid.load) {
-        (xv > x1 ? lo : hi) = std::move(mid);
-        mid = std::move(v);
-      } else {
-        (xv > x1 ? hi : lo) = std::move(v);
-      }
+    // Brent's minimiser on the bracket; every evaluation continues from the
+    // state solved last, which lies close by.
+    Probe last = mid;
+    auto loadAt = [&](Real delta) {
+      Probe p;
+      if (!probeAt(last, delta, p)) throw NumericalError("no solution at delta/z0 = " + numberText(delta));
+      last = std::move(p);
+      return last.load;
+    };
+    try {
+      const Real best = detail::brentMinimise(loadAt, lo.delta, hi.delta, 0.0, 1e-4 * d, "LJ sphere minimum").first;
+      Probe atBest;
+      if (probeAt(last, best, atBest) && atBest.load <= mid.load) mid = std::move(atBest);
+    } catch (const NumericalError&) {
+      // keep the smallest bracketed sample
     }
     out.minimumLoad = mid.load;
     out.deltaAtMinimum = mid.delta;

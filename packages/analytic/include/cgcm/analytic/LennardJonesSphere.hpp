@@ -48,8 +48,7 @@
 // of P along this branch (JKR: −3/2, reached before the displacement-control
 // jump-off at −5/6). Rebuilding the rings shifts P slightly (by the change of
 // the discretisation error), so the minimum is located again on one set of
-// rings centred at the edge of the smallest sample, by successive parabolic
-// interpolation.
+// rings centred at the edge of the smallest sample, by Brent's minimiser.
 #include <vector>
 
 #include "cgcm/core/Types.hpp"
