@@ -1,0 +1,475 @@
+#include "cgcm/mesh/GmshReader.hpp"
+
+#include <gmsh.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <regex>
+#include <sstream>
+#include <unordered_map>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/mesh/Generators.hpp"
+
+namespace cgcm::mesh {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::mutex gmshMutex;  // gmsh keeps global state: one read at a time
+
+std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
+
+bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+
+// One gmsh session per read. The parser's variables and the ONELAB
+// parameters survive gmsh::finalize(); a DefineConstant with a Name option
+// would take the value a previous file gave the same ONELAB name. Clear both.
+struct GmshSession {
+  explicit GmshSession(bool verbose) {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+    gmsh::clear();
+    gmsh::onelab::clear();
+  }
+  ~GmshSession() {
+    gmsh::onelab::clear();
+    gmsh::finalize();
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+// A .geo of "name = value;" lines, merged before the user's file so that its
+// DefineConstant[] entries keep these values (gmsh's -setnumber semantics;
+// -setnumber itself is stored process-wide by gmsh and would leak into every
+// later read).
+struct OverrideFile {
+  std::string path;
+  explicit OverrideFile(const std::map<std::string, double>& numbers) {
+    std::string tmpl = (fs::temp_directory_path() / "cgcm-setnumber-XXXXXX.geo").string();
+    const int fd = mkstemps(tmpl.data(), 4);
+    if (fd < 0) throw InputError("cannot create a temporary file for the gmsh number overrides in " + tmpl);
+    close(fd);
+    path = tmpl;
+    std::ofstream out(path);
+    char buf[64];
+    for (const auto& [name, value] : numbers) {
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      out << name << " = " << buf << ";\n";
+    }
+  }
+  ~OverrideFile() { std::remove(path.c_str()); }
+};
+
+// Whether `name` is assigned inside one of the DefineConstant[...] blocks of a .geo text.
+bool definesConstant(const std::string& text, const std::string& name) {
+  const std::regex assignment("\\b" + name + "\\s*=[^=]");
+  for (std::size_t pos = text.find("DefineConstant"); pos != std::string::npos;
+       pos = text.find("DefineConstant", pos + 1)) {
+    const std::size_t open = text.find('[', pos);
+    if (open == std::string::npos) break;
+    int depth = 0;
+    std::size_t end = open;
+    for (; end < text.size(); ++end) {
+      if (text[end] == '[') ++depth;
+      if (text[end] == ']' && --depth == 0) break;
+    }
+    if (std::regex_search(text.begin() + open, text.begin() + end, assignment)) return true;
+  }
+  return false;
+}
+
+// Checks a .geo's text: the number overrides must name DefineConstant[]
+// entries, and the file must end with a newline (gmsh 4.8 silently drops the
+// last statement of a final line that holds several and no newline).
+void checkGeo(const std::string& path, const std::map<std::string, double>& numbers) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  if (!text.empty() && text.back() != '\n')
+    throw InputError(inQuotes(path) + " does not end with a newline; gmsh may skip its last statement: add one");
+  const std::regex identifier("[A-Za-z_][A-Za-z0-9_]*");
+  for (const auto& [name, value] : numbers) {
+    if (!std::isfinite(value)) throw InputError("gmsh number override " + inQuotes(name) + " is not finite");
+    if (!std::regex_match(name, identifier))
+      throw InputError("gmsh number override " + inQuotes(name) + " is not a .geo variable name");
+    if (!definesConstant(text, name))
+      throw InputError("gmsh number override " + inQuotes(name) + ": " + inQuotes(path) +
+                       " has no DefineConstant[] entry of that name");
+  }
+}
+
+std::string elementTypeName(int type) {
+  std::string name;
+  int dim = 0, order = 0, numNodes = 0, numPrimary = 0;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, numNodes, local, numPrimary);
+  return name;
+}
+
+const char* entityKind(int dim) {
+  static const char* kinds[] = {"point", "curve", "surface", "volume"};
+  return kinds[dim];
+}
+
+// gmsh element type -> cell type of a body of dimension `dim` (false if unsupported).
+bool cellTypeOf(int gmshType, int dim, CellType& type) {
+  if (dim == 2 && gmshType == 3) return type = CellType::Quad4, true;
+  if (dim == 3 && gmshType == 5) return type = CellType::Hex8, true;
+  if (dim == 3 && gmshType == 4) return type = CellType::Tet4, true;
+  return false;
+}
+
+// Element types allowed in lower-dimensional groups: point, line 2, triangle 3, quadrangle 4.
+bool boundaryTypeAllowed(int gmshType, int dim) {
+  return (dim == 0 && gmshType == 15) || (dim == 1 && gmshType == 1) || (dim == 2 && (gmshType == 2 || gmshType == 3));
+}
+
+Real det3(const Real a[3], const Real b[3], const Real c[3]) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// +1 if the Jacobian is positive at every corner, -1 if negative at every
+// corner (the cell is mirrored), 0 otherwise (tangled or degenerate).
+int orientation(const Mesh& m, CellType type, const LocalIndex* c) {
+  auto edge = [&](int from, int to, Real e[3]) {
+    for (int i = 0; i < 3; ++i) e[i] = i < m.dim ? m.coord(c[to], i) - m.coord(c[from], i) : 0.0;
+  };
+  std::vector<Real> jac;
+  Real a[3], b[3], d[3];
+  if (type == CellType::Quad4) {
+    for (int k = 0; k < 4; ++k) {
+      edge(k, (k + 1) % 4, a), edge(k, (k + 3) % 4, b);
+      jac.push_back(a[0] * b[1] - a[1] * b[0]);
+    }
+  } else if (type == CellType::Tet4) {
+    edge(0, 1, a), edge(0, 2, b), edge(0, 3, d);
+    jac.push_back(det3(a, b, d));
+  } else {
+    // the three edges at each corner, right-handed for a positively ordered hex
+    static const int corner[8][4] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
+                                     {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+    for (const auto& k : corner) {
+      edge(k[0], k[1], a), edge(k[0], k[2], b), edge(k[0], k[3], d);
+      jac.push_back(det3(a, b, d));
+    }
+  }
+  if (std::all_of(jac.begin(), jac.end(), [](Real j) { return j > 0.0; })) return 1;
+  if (std::all_of(jac.begin(), jac.end(), [](Real j) { return j < 0.0; })) return -1;
+  return 0;
+}
+
+// Mirrors a cell's node order (reverses its orientation).
+void mirror(CellType type, LocalIndex* c) {
+  if (type == CellType::Quad4) std::swap(c[1], c[3]);
+  if (type == CellType::Tet4) std::swap(c[1], c[2]);
+  if (type == CellType::Hex8) std::swap(c[1], c[3]), std::swap(c[5], c[7]);
+}
+
+struct Group {
+  int dim, tag;
+  std::string name;
+};
+
+struct RawBody {
+  std::string name;
+  std::string group;  // physical name, for messages
+  bool typed = false;
+  int gmshType = 0;
+  CellType type = CellType::Quad4;
+  std::vector<std::size_t> nodeTags, elementTags;
+};
+
+class Extractor {
+ public:
+  Extractor(const std::string& path, int dim) : path_(path), dim_(dim) {}
+
+  Mesh run() {
+    readGroups();
+    readBodies();
+    numberNodes();
+    Mesh m;
+    m.dim = dim_;
+    m.coords = coords_;
+    m.numBodies = int(bodies_.size());
+    buildCells(m);
+    std::map<int, std::vector<std::vector<LocalIndex>>> contactFacets;
+    readBoundaryGroups(m, contactFacets);
+    buildSurfaces(m);
+    for (const auto& [body, facets] : contactFacets) restrictSurface(m, body, facets);
+    return m;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(inQuotes(path_) + ": " + what); }
+
+  void readGroups() {
+    gmsh::vectorpair tags;
+    gmsh::model::getPhysicalGroups(tags);
+    if (tags.empty()) fail("no physical groups; bodies are physical groups named \"body:<name>\" (meshes/README.md)");
+    int top = 0;
+    for (const auto& [dim, tag] : tags) top = std::max(top, dim);
+    if (top != dim_)
+      fail("a " + std::to_string(dim_) + "D mesh was expected but the physical groups are " +
+           (top < dim_ ? "at most " : "") + std::to_string(top) + "D");
+    for (const auto& [dim, tag] : tags) {
+      std::string name;
+      gmsh::model::getPhysicalName(dim, tag, name);
+      const std::string what = "physical " + std::string(entityKind(dim)) + " " + std::to_string(tag);
+      if (name.empty()) fail(what + " has no name; every physical group needs one (meshes/README.md)");
+      if (dim == dim_ && (!startsWith(name, "body:") || name.size() == 5))
+        fail(what + " " + inQuotes(name) + ": groups of the mesh's dimension name bodies, as \"body:<name>\"");
+      if (dim < dim_ && startsWith(name, "body:"))
+        fail(what + " " + inQuotes(name) + " is " + std::to_string(dim) + "D; a body is a " + std::to_string(dim_) +
+             "D group");
+      if (startsWith(name, "contact:") && dim != dim_ - 1)
+        fail(what + " " + inQuotes(name) + ": a contact surface is a " + std::to_string(dim_ - 1) + "D group");
+      groups_.push_back({dim, tag, name});
+    }
+  }
+
+  void readBodies() {
+    std::map<int, std::string> entityBody;  // entity tag -> body group name
+    for (const auto& g : groups_) {
+      if (g.dim != dim_) continue;
+      const std::string bodyName = g.name.substr(5);
+      auto it = std::find_if(bodies_.begin(), bodies_.end(), [&](const RawBody& b) { return b.name == bodyName; });
+      if (it == bodies_.end()) {
+        RawBody fresh;
+        fresh.name = bodyName, fresh.group = g.name;
+        bodies_.push_back(std::move(fresh));
+        it = bodies_.end() - 1;
+      }
+      RawBody& body = *it;
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(g.dim, g.tag, entities);
+      for (int e : entities) {
+        auto [owner, fresh] = entityBody.try_emplace(e, g.name);
+        if (!fresh) {
+          if (owner->second == g.name) continue;
+          fail(std::string(entityKind(dim_)) + " " + std::to_string(e) + " is in two bodies, " +
+               inQuotes(owner->second) + " and " + inQuotes(g.name));
+        }
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+        gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim_, e);
+        for (std::size_t t = 0; t < types.size(); ++t) {
+          CellType type;
+          if (!cellTypeOf(types[t], dim_, type))
+            fail("physical group " + inQuotes(g.name) + " has elements of type " + inQuotes(elementTypeName(types[t])) +
+                 "; supported are " + (dim_ == 2 ? "\"Quadrilateral 4\"" : "\"Hexahedron 8\" and \"Tetrahedron 4\""));
+          if (body.typed && type != body.type)
+            fail("body " + inQuotes(g.name) + " mixes " + inQuotes(elementTypeName(body.gmshType)) + " and " +
+                 inQuotes(elementTypeName(types[t])) + " elements; one element type per body");
+          body.typed = true, body.type = type, body.gmshType = types[t];
+          body.elementTags.insert(body.elementTags.end(), elementTags[t].begin(), elementTags[t].end());
+          body.nodeTags.insert(body.nodeTags.end(), nodeTags[t].begin(), nodeTags[t].end());
+        }
+      }
+      if (body.elementTags.empty()) fail("body " + inQuotes(g.name) + " has no elements");
+    }
+    // Cells outside every body would silently disappear from the model.
+    gmsh::vectorpair entities;
+    gmsh::model::getEntities(entities, dim_);
+    for (const auto& [d, e] : entities) {
+      if (entityBody.count(e)) continue;
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+      gmsh::model::mesh::getElements(types, elementTags, nodeTags, d, e);
+      if (!types.empty())
+        fail(std::string(entityKind(d)) + " " + std::to_string(e) + " is meshed but in no \"body:<name>\" group");
+    }
+  }
+
+  void numberNodes() {
+    std::vector<std::size_t> used;
+    for (const auto& b : bodies_) used.insert(used.end(), b.nodeTags.begin(), b.nodeTags.end());
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    std::vector<std::size_t> tags;
+    std::vector<double> xyz, uvw;
+    gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
+    std::unordered_map<std::size_t, std::size_t> position;
+    for (std::size_t i = 0; i < tags.size(); ++i) position[tags[i]] = i;
+    Real extent = 0.0;
+    for (double v : xyz) extent = std::max(extent, std::abs(v));
+    coords_.reserve(used.size() * dim_);
+    for (std::size_t n = 0; n < used.size(); ++n) {
+      index_[used[n]] = LocalIndex(n);
+      const double* x = &xyz[3 * position.at(used[n])];
+      if (dim_ == 2 && std::abs(x[2]) > 1e-12 * std::max(extent, 1.0))
+        fail("node " + std::to_string(used[n]) + " has z = " + std::to_string(x[2]) +
+             "; a 2D mesh must lie in the plane z = 0");
+      coords_.insert(coords_.end(), x, x + dim_);
+    }
+  }
+
+  void buildCells(Mesh& m) {
+    std::vector<int> owner(coords_.size() / dim_, -1);
+    for (std::size_t bi = 0; bi < bodies_.size(); ++bi) {
+      const RawBody& raw = bodies_[bi];
+      ElementBlock b;
+      b.name = raw.name;
+      b.body = int(bi);
+      b.type = raw.type;
+      const int npc = nodesPerCell(raw.type);
+      b.connectivity.reserve(raw.nodeTags.size());
+      for (std::size_t t : raw.nodeTags) {
+        const LocalIndex n = index_.at(t);
+        if (owner[n] >= 0 && owner[n] != b.body) {
+          std::ostringstream at;
+          for (int i = 0; i < dim_; ++i) at << (i ? ", " : "") << coords_[std::size_t(n) * dim_ + i];
+          fail("bodies " + inQuotes(bodies_[owner[n]].group) + " and " + inQuotes(raw.group) + " share the node at (" +
+               at.str() + "); bodies must be separate meshes (do not fragment them)");
+        }
+        owner[n] = b.body;
+        b.connectivity.push_back(n);
+      }
+      for (LocalIndex c = 0; c < b.numCells(); ++c) {
+        LocalIndex* cell = &b.connectivity[std::size_t(c) * npc];
+        const int sign = orientation(m, raw.type, cell);
+        if (sign < 0) mirror(raw.type, cell);
+        if (sign == 0)
+          fail("element " + std::to_string(raw.elementTags[c]) + " of " + inQuotes(raw.group) +
+               " is inverted or degenerate (its Jacobian changes sign)");
+      }
+      m.blocks.push_back(std::move(b));
+    }
+  }
+
+  void readBoundaryGroups(Mesh& m, std::map<int, std::vector<std::vector<LocalIndex>>>& contactFacets) {
+    for (const auto& g : groups_) {
+      if (g.dim == dim_) continue;
+      int contactBody = -1;
+      if (startsWith(g.name, "contact:")) {
+        const std::string bodyName = g.name.substr(8);
+        auto it = std::find_if(bodies_.begin(), bodies_.end(), [&](const RawBody& b) { return b.name == bodyName; });
+        if (it == bodies_.end()) {
+          std::string names;
+          for (const auto& b : bodies_) names += (names.empty() ? "" : ", ") + inQuotes(b.name);
+          fail("physical group " + inQuotes(g.name) + " names no body; the bodies are " + names);
+        }
+        contactBody = int(it - bodies_.begin());
+      }
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(g.dim, g.tag, entities);
+      for (int e : entities) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+        gmsh::model::mesh::getElements(types, elementTags, nodeTags, g.dim, e);
+        for (std::size_t t = 0; t < types.size(); ++t) {
+          if (!boundaryTypeAllowed(types[t], g.dim))
+            fail("physical group " + inQuotes(g.name) + " has elements of type " + inQuotes(elementTypeName(types[t])) +
+                 "; supported on boundaries are points, \"Line 2\", \"Triangle 3\" and \"Quadrilateral 4\"");
+          if (contactBody < 0) continue;
+          const std::size_t npe = nodeTags[t].size() / elementTags[t].size();
+          for (std::size_t k = 0; k < elementTags[t].size(); ++k) {
+            std::vector<LocalIndex> key;
+            for (std::size_t a = 0; a < npe; ++a) key.push_back(nodeIndex(nodeTags[t][k * npe + a], g.name));
+            std::sort(key.begin(), key.end());
+            contactFacets[contactBody].push_back(std::move(key));
+          }
+        }
+      }
+      if (contactBody >= 0 && contactFacets[contactBody].empty())
+        fail("physical group " + inQuotes(g.name) + " is empty");
+      std::vector<std::size_t> tags;
+      std::vector<double> xyz;
+      gmsh::model::mesh::getNodesForPhysicalGroup(g.dim, g.tag, tags, xyz);
+      if (tags.empty()) fail("physical group " + inQuotes(g.name) + " has no nodes");
+      auto& nodes = m.nodeSets[g.name];
+      for (std::size_t t : tags) nodes.push_back(nodeIndex(t, g.name));
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    }
+  }
+
+  LocalIndex nodeIndex(std::size_t tag, const std::string& group) const {
+    auto it = index_.find(tag);
+    if (it == index_.end())
+      fail("physical group " + inQuotes(group) + " has node " + std::to_string(tag) +
+           ", which belongs to no body's cell");
+    return it->second;
+  }
+
+  // Keeps only the facets of the body's boundary listed in its contact groups.
+  void restrictSurface(Mesh& m, int body, std::vector<std::vector<LocalIndex>> keys) const {
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    Surface& s = m.surfaces.at(body);
+    Surface kept;
+    kept.body = s.body;
+    kept.nodesPerFacet = s.nodesPerFacet;
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      const LocalIndex* n = &s.facets[std::size_t(f) * s.nodesPerFacet];
+      std::vector<LocalIndex> key(n, n + s.nodesPerFacet);
+      std::sort(key.begin(), key.end());
+      if (!std::binary_search(keys.begin(), keys.end(), key)) continue;
+      kept.facets.insert(kept.facets.end(), n, n + s.nodesPerFacet);
+      kept.facetCells.push_back(s.facetCells[f]);
+    }
+    if (kept.numFacets() != LocalIndex(keys.size()))
+      fail(std::to_string(keys.size() - kept.numFacets()) + " of the " + std::to_string(keys.size()) +
+           " elements of \"contact:" + bodies_[body].name + "\" are not on the boundary of body " +
+           inQuotes(bodies_[body].group));
+    s = std::move(kept);
+  }
+
+  std::string path_;
+  int dim_;
+  std::vector<Group> groups_;
+  std::vector<RawBody> bodies_;
+  std::unordered_map<std::size_t, LocalIndex> index_;  // gmsh node tag -> node index
+  std::vector<Real> coords_;
+};
+
+}  // namespace
+
+Mesh readGmsh(const std::string& path, const GmshOptions& options) {
+  if (options.dim != 2 && options.dim != 3)
+    throw InputError("readGmsh: the mesh dimension must be 2 or 3, got " + std::to_string(options.dim));
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError("mesh file " + inQuotes(path) + " does not exist or is not a file");
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".geo" && ext != ".msh")
+    throw InputError("mesh file " + inQuotes(path) + ": expected a gmsh .geo or .msh file");
+  const bool geo = ext == ".geo";
+  if (!geo && !options.numbers.empty())
+    throw InputError("mesh file " + inQuotes(path) + ": number overrides apply to .geo files only");
+  if (geo) checkGeo(path, options.numbers);
+
+  std::lock_guard<std::mutex> lock(gmshMutex);
+  GmshSession session(options.verbose);
+  try {
+    if (!options.numbers.empty()) {
+      OverrideFile overrides(options.numbers);
+      gmsh::merge(overrides.path);
+    }
+    gmsh::merge(path);
+    if (geo) gmsh::model::mesh::generate(options.dim);
+    return Extractor(path, options.dim).run();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::string& message) {  // gmsh reports errors by throwing their text
+    throw InputError(inQuotes(path) + ": gmsh: " + message);
+  } catch (const std::exception& e) {
+    throw InputError(inQuotes(path) + ": " + e.what());
+  } catch (...) {
+    std::string message;
+    gmsh::logger::getLastError(message);
+    throw InputError(inQuotes(path) + ": gmsh: " + (message.empty() ? std::string("unknown error") : message));
+  }
+}
+
+}  // namespace cgcm::mesh
