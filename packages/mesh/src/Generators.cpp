@@ -32,20 +32,6 @@ void addNodeSet(Mesh& m, const std::string& name, std::vector<LocalIndex> nodes)
   m.nodeSets[name] = std::move(nodes);
 }
 
-// Outward-oriented local facets of each cell type (Exodus face order).
-const std::vector<std::vector<int>>& localFacets(CellType type) {
-  static const std::vector<std::vector<int>> quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const std::vector<std::vector<int>> hex = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                                                    {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> tet = {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
-  switch (type) {
-    case CellType::Quad4: return quad;
-    case CellType::Hex8: return hex;
-    case CellType::Tet4: return tet;
-  }
-  return quad;
-}
-
 }  // namespace
 
 Mesh rectangle(const RectangleSpec& s) {

@@ -16,6 +16,10 @@ enum class CellType { Quad4, Hex8, Tet4 };
 
 int nodesPerCell(CellType type);
 const char* cellTypeName(CellType type);
+/// Local facets of a cell (edges in 2D, faces in 3D) as local node indices,
+/// oriented outward as Surface documents, in Exodus II side order: side s
+/// (1-based) of a cell is entry s - 1.
+const std::vector<std::vector<int>>& localFacets(CellType type);
 
 /// Cells of one type belonging to one body.
 struct ElementBlock {
