@@ -1,6 +1,7 @@
 // Cost per interaction pair of the Method 3 kernel (prints; not a test).
 //
 //   bench_interaction_kernel [segments per body = 4000] [repetitions = 20]
+//                            [projection smoothing / r0 = default]
 //
 // Geometry: axisymmetric sphere (R = 100 r0) at h0 = r_S0 above a flat, LJ
 // potential, cutoff 10 r0, 4 Gauss points per segment. Reports the search
@@ -48,6 +49,7 @@ mesh::Surface polyline(std::vector<Real>& coords, int n, Curve&& curve, int body
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 4000;
   const int reps = argc > 2 ? std::atoi(argv[2]) : 20;
+  const double smoothing = argc > 3 ? std::atof(argv[3]) : -1.0;  // < 0: the default
   const Real pi = std::acos(-1.0);
   const Real R = 100.0, r0 = 1.0;
   auto lj = std::make_shared<LennardJones>(1.0, r0);
@@ -74,6 +76,7 @@ int main(int argc, char** argv) {
       1));
   SurfaceInteractionOptions opt;
   opt.formulation = Formulation::Axisymmetric;
+  opt.projectionSmoothing = smoothing < 0.0 ? smoothing : smoothing * r0;
   SurfaceInteraction si(surfaces, {1.0, 1.0}, lj, opt);
 
   std::vector<PairContribution> out;
@@ -99,7 +102,7 @@ int main(int argc, char** argv) {
   const auto t3b = Clock::now();
   const double np = double(si.summary().numPairs);
 
-  // bare kernel on the stored pairs' coordinates
+  // bare kernel on the stored pairs' coordinates (closest target)
   std::vector<Real> z(8 * si.pairs().size());
   for (std::size_t i = 0; i < si.pairs().size(); ++i)
     for (int a = 0; a < 4; ++a)
@@ -173,6 +176,8 @@ int main(int argc, char** argv) {
   std::printf(
       "  quadrature points searched %d, pairs %d, beyond cutoff %d (cutoff %.1f r0, |T(r_c)| = %.2e)\n",
       int(s.numQuadraturePoints), int(s.numPairs), int(s.numBeyondCutoff), s.cutoff / r0, s.cutoffTraction);
+  std::printf("  projection smoothing %.1e r0: %d pairs blended (%d truncated to %d segments)\n",
+              si.projectionSmoothing() / r0, int(s.numBlended), int(s.numTruncatedBlends), kMaxBlendTargets);
   std::printf("  search (pair list)            %8.1f ns per quadrature point (%.2f ms per update)\n",
               1e9 * seconds(t0, t1) / reps / s.numQuadraturePoints, 1e3 * seconds(t0, t1) / reps);
   std::printf(

@@ -343,6 +343,29 @@ void SegmentTreeSearch2D::facetsNear(const Real* lo, const Real* hi, Real radius
   std::sort(out.begin() + start, out.end());
 }
 
+void SegmentTreeSearch2D::facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
+  if (nodes_.empty()) return;
+  const Real limit2 = radius * radius;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& nd = nodes_[stack[--top]];
+    if (boxDistance2(x, nd.lo, nd.hi) > limit2) continue;
+    if (nd.left < 0) {
+      for (int k = nd.begin; k < nd.end; ++k) {
+        const Real* s = &seg_[4 * std::size_t(k)];
+        Real xi, p[2];
+        int region;
+        if (projectOntoSegment(x, s, s + 2, xi, p, region) <= limit2) out.push_back(ids_[k]);
+      }
+      continue;
+    }
+    stack[top++] = nd.left;
+    stack[top++] = nd.right;
+  }
+}
+
 // ---------------------------------------------------------------------------
 // BruteForceSegmentSearch2D
 

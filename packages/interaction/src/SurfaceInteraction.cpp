@@ -38,23 +38,47 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   if (!(options_.cutoffTaper >= 0.0 && options_.cutoffTaper < 1.0))
     throw InputError("surface interaction: cutoffTaper must be in [0, 1), got " +
                      std::to_string(options_.cutoffTaper));
+  if (std::isnan(options_.projectionSmoothing) || std::isinf(options_.projectionSmoothing))
+    throw InputError("surface interaction: projectionSmoothing must be finite");
   rule_ = gaussLegendreUnit(options_.quadraturePoints);
-  cutoff_ = options_.cutoff > 0.0 ? options_.cutoff : 10.0 * potential_->r0();
-  taperStart_ = std::isfinite(cutoff_) ? (1.0 - options_.cutoffTaper) * cutoff_ : cutoff_;
+  cutoff1_ = options_.cutoff > 0.0 ? options_.cutoff : 10.0 * potential_->r0();
+  taperStart1_ = std::isfinite(cutoff1_) ? (1.0 - options_.cutoffTaper) * cutoff1_ : cutoff1_;
+  smoothing1_ = options_.projectionSmoothing >= 0.0
+                    ? options_.projectionSmoothing
+                    : SurfaceInteractionOptions::kDefaultProjectionSmoothing * potential_->r0();
+  setLengthScale(1.0);
 
-  summary_.cutoff = cutoff_;
-  summary_.taperStart = taperStart_;
   Real maxProduct = 0.0;
   for (std::size_t k = 0; k < densities_.size(); ++k)
     for (std::size_t l = 0; l < densities_.size(); ++l)
       if (k != l) maxProduct = std::max(maxProduct, densities_[k] * densities_[l]);
+  // both invariant under the length scale
   summary_.cutoffTraction =
-      std::isfinite(cutoff_) ? maxProduct * std::abs(potential_->halfSpace(taperStart_)) : 0.0;
-  summary_.neglectedWorkFraction = neglectedWorkFraction(*potential_, taperStart_, cutoff_);
+      std::isfinite(cutoff1_) ? maxProduct * std::abs(potential_->halfSpace(taperStart1_)) : 0.0;
+  summary_.neglectedWorkFraction = neglectedWorkFraction(*potential_, taperStart1_, cutoff1_);
   summary_.resultant.assign(surfaces_.size(), {0.0, 0.0});
   summary_.minDistance = std::numeric_limits<Real>::infinity();
   search_.resize(surfaces_.size());
   for (auto& s : search_) s = makeClosestPointSearch(2, options_.search);
+
+  // neighbours_[l][2 s + end]: the other segment holding that node of s, if exactly one does
+  neighbours_.resize(surfaces_.size());
+  for (std::size_t l = 0; l < surfaces_.size(); ++l) {
+    const mesh::Surface& sl = surfaces_[l];
+    std::vector<std::pair<LocalIndex, LocalIndex>> byNode;  // (node, 2 s + end)
+    for (LocalIndex i = 0; i < 2 * sl.numFacets(); ++i) byNode.emplace_back(sl.facets[i], i);
+    std::sort(byNode.begin(), byNode.end());
+    neighbours_[l].assign(byNode.size(), -1);
+    for (std::size_t i = 0; i < byNode.size();) {
+      std::size_t j = i;
+      while (j < byNode.size() && byNode[j].first == byNode[i].first) ++j;
+      if (j - i == 2) {
+        neighbours_[l][byNode[i].second] = byNode[i + 1].second / 2;
+        neighbours_[l][byNode[i + 1].second] = byNode[i].second / 2;
+      }
+      i = j;
+    }
+  }
 }
 
 Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real cutoff) {
@@ -86,6 +110,95 @@ void SurfaceInteraction::setStrength(Real strength) {
   strength_ = strength;
 }
 
+void SurfaceInteraction::setLengthScale(Real b) {
+  if (!(b > 0.0) || !std::isfinite(b))
+    throw InputError("surface interaction: length scale must be finite and > 0, got " + std::to_string(b));
+  lengthScale_ = b;
+  cutoff_ = b * cutoff1_;
+  taperStart_ = b * taperStart1_;
+  smoothing_ = b * smoothing1_;
+  summary_.cutoff = cutoff_;
+  summary_.taperStart = taperStart_;
+}
+
+// delta P of the projection of x onto segment s of body l (see the header):
+// P = (o_s/delta)^2 exp(-(o_n/delta)^2) when s's projection is its vertex
+// (region 1, 2), o_s the overshoot of the unclamped foot beyond that vertex
+// and o_n the neighbour's beyond the same vertex; 0 for a foot inside s or
+// a vertex no other segment holds. With grad (8 entries) also its derivative
+// with respect to (x, node a of s, node b of s, far node of the neighbour),
+// whose id goes to *far (-1 when not involved).
+Real SurfaceInteraction::vertexPenalty(const Real* coords, int l, LocalIndex s, const Real x[2], int region,
+                                       Real* grad, LocalIndex* far) const {
+  if (grad != nullptr)
+    for (int i = 0; i < 8; ++i) grad[i] = 0.0;
+  if (far != nullptr) *far = -1;
+  const mesh::Surface& sl = surfaces_[l];
+  const int end = region - 1;
+  const LocalIndex n = end < 0 ? -1 : neighbours_[l][2 * std::size_t(s) + end];
+  if (n < 0) return 0.0;
+  const Real delta = smoothing_;
+  const LocalIndex vertex = sl.facets[2 * s + end];
+  const int endN = sl.facets[2 * n] == vertex ? 0 : 1;
+  auto at = [&](LocalIndex node) { return coords + 2 * std::size_t(node); };
+  Real gs[6], gn[6];
+  const Real os = overshootBeyondEnd(x, at(sl.facets[2 * s]), at(sl.facets[2 * s + 1]), end, grad ? gs : nullptr);
+  if (os == 0.0) return 0.0;
+  const Real on = overshootBeyondEnd(x, at(sl.facets[2 * n]), at(sl.facets[2 * n + 1]), endN, grad ? gn : nullptr);
+  const Real ts = os / delta, tn = on / delta;
+  const Real phi = std::exp(-tn * tn), P = ts * ts * phi;
+  if (grad != nullptr) {
+    // d(delta P) = 2 ts phi do_s - 2 ts^2 tn phi do_n
+    const Real cs = 2.0 * ts * phi, cn = -2.0 * ts * ts * tn * phi;
+    for (int i = 0; i < 2; ++i) {
+      grad[i] = cs * gs[i] + cn * gn[i];
+      grad[2 + i] = cs * gs[2 + i];
+      grad[4 + i] = cs * gs[4 + i];
+      grad[2 * (1 + end) + i] += cn * gn[2 * (1 + endN) + i];  // the shared vertex
+      grad[6 + i] = cn * gn[2 * (2 - endN) + i];               // the neighbour's other node
+    }
+    if (far != nullptr) *far = sl.facets[2 * n + 1 - endN];
+  }
+  return delta * P;
+}
+
+// The blend targets of the point x (closest segment at r_min): every segment
+// of body l with rho <= rho_min + c delta, sorted by rho (ties by facet id),
+// at most kMaxBlendTargets. The closest segment or its neighbour has
+// P <= 1/e (both P's of the two projections onto a vertex are
+// t_s^2 exp(-t_n^2) and t_n^2 exp(-t_s^2)), so rho_min <= r_min + delta/e
+// and every candidate lies within r_min + (c + 1) delta.
+void SurfaceInteraction::findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p) {
+  const mesh::Surface& sl = surfaces_[l];
+  const Real range = kSmoothingRange * smoothing_, limit = rmin + range + smoothing_;
+  near_.clear();
+  search_[l]->facetsNearPoint(x, limit, near_);
+  candidates_.clear();
+  Real rhoMin = std::numeric_limits<Real>::infinity();
+  for (LocalIndex s : near_) {
+    Real xi, xp[2];
+    int region;
+    const Real d2 = projectOntoSegment(x, coords + 2 * std::size_t(sl.facets[2 * s]),
+                                       coords + 2 * std::size_t(sl.facets[2 * s + 1]), xi, xp, region);
+    const Real r = std::sqrt(d2);
+    if (r > limit) continue;
+    const Real rho = r + vertexPenalty(coords, l, s, x, region, nullptr, nullptr);
+    rhoMin = std::min(rhoMin, rho);
+    candidates_.emplace_back(rho, s);
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+  int n = 0;
+  while (n < int(candidates_.size()) && candidates_[n].first <= rhoMin + range) ++n;
+  if (n == 0) return;  // cannot happen: the closest segment is within the limit
+  if (n > kMaxBlendTargets) {
+    ++summary_.numTruncatedBlends;
+    n = kMaxBlendTargets;
+  }
+  p.numTargets = n;
+  for (int i = 0; i < n; ++i) p.targets[i] = candidates_[i].second;
+  if (n > 1) ++summary_.numBlended;
+}
+
 void SurfaceInteraction::updatePairs(const Real* coords) {
   const int nb = numBodies();
   for (int l = 0; l < nb; ++l) search_[l]->build(coords, surfaces_[l]);
@@ -93,6 +206,8 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
   summary_.numQuadraturePoints = 0;
   summary_.numPairs = 0;
   summary_.numBeyondCutoff = 0;
+  summary_.numBlended = 0;
+  summary_.numTruncatedBlends = 0;
   const int nq = rule_.size();
   for (int k = 0; k < nb; ++k) {
     const mesh::Surface& sk = surfaces_[k];
@@ -110,7 +225,10 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
             ++summary_.numBeyondCutoff;
             continue;
           }
-          pairs_.push_back(InteractionPair{k, e, q, l, pr.facet});
+          InteractionPair p{k, e, q, l};
+          p.targets[0] = pr.facet;
+          if (smoothing_ > 0.0) findTargets(coords, x, l, pr.distance, p);
+          pairs_.push_back(p);
         }
       }
     }
@@ -118,40 +236,125 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
   summary_.numPairs = LocalIndex(pairs_.size());
 }
 
+namespace {
+
+[[noreturn]] void throwContact(const InteractionPair& p, LocalIndex target, Real r) {
+  std::ostringstream os;
+  os << "surface interaction: quadrature point " << p.qp << " of segment " << p.facet << " of body " << p.body
+     << " lies on segment " << target << " of body " << p.otherBody << " (r = " << r
+     << "): the surfaces touch or interpenetrate";
+  throw NumericalError(os.str());
+}
+
+bool allFinite(const Real f[4]) {
+  return std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2]) && std::isfinite(f[3]);
+}
+
+}  // namespace
+
 PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p,
                                            PairContribution& out, bool withTangent) const {
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& sl = surfaces_[p.otherBody];
   out.rowNodes[0] = out.colNodes[0] = sk.facets[2 * p.facet];
   out.rowNodes[1] = out.colNodes[1] = sk.facets[2 * p.facet + 1];
-  out.colNodes[2] = sl.facets[2 * p.target];
-  out.colNodes[3] = sl.facets[2 * p.target + 1];
-  Real z[8];
-  for (int a = 0; a < 4; ++a) {
-    z[2 * a] = coords[2 * std::size_t(out.colNodes[a])];
-    z[2 * a + 1] = coords[2 * std::size_t(out.colNodes[a]) + 1];
-  }
-  if (z[0] == z[2] && z[1] == z[3]) {
+  int nc = 2;
+  auto column = [&](LocalIndex node) {  // index of node in out.colNodes, appended if new
+    int c = 0;
+    while (c < nc && out.colNodes[c] != node) ++c;
+    if (c == nc) out.colNodes[nc++] = node;
+    return c;
+  };
+  // z of target t: the point's segment (4) then the target's nodes (4);
+  // col[t][a]: column of the target's node a
+  const int nt = p.numTargets;
+  Real z[kMaxBlendTargets][8];
+  int col[kMaxBlendTargets][2];
+  for (int t = 0; t < nt; ++t)
+    for (int a = 0; a < 2; ++a) {
+      col[t][a] = column(sl.facets[2 * p.targets[t] + a]);
+      for (int i = 0; i < 2; ++i) {
+        z[t][2 * a + i] = coords[2 * std::size_t(out.colNodes[a]) + i];
+        z[t][4 + 2 * a + i] = coords[2 * std::size_t(out.colNodes[col[t][a]]) + i];
+      }
+    }
+  out.numColNodes = nc;
+  if (z[0][0] == z[0][2] && z[0][1] == z[0][3]) {
     std::ostringstream os;
     os << "surface interaction: segment " << p.facet << " of body " << p.body << " has zero length";
     throw NumericalError(os.str());
   }
   const Law law = this->law(p.body, p.otherBody);
   const Real xi = rule_.points[p.qp], w = rule_.weights[p.qp];
-  Real(*K)[8] = withTangent ? out.K : nullptr;
-  const PairState st = options_.formulation == Formulation::Axisymmetric
-                           ? method3Pair<Formulation::Axisymmetric>(z, xi, w, law, out.f, K)
-                           : method3Pair<Formulation::PlaneStrain>(z, xi, w, law, out.f, K);
-  const bool finite = std::isfinite(out.f[0]) && std::isfinite(out.f[1]) && std::isfinite(out.f[2]) &&
-                      std::isfinite(out.f[3]);
-  if (!(st.distance > 0.0) || !finite) {
-    std::ostringstream os;
-    os << "surface interaction: quadrature point " << p.qp << " of segment " << p.facet << " of body "
-       << p.body << " lies on segment " << p.target << " of body " << p.otherBody << " (r = " << st.distance
-       << "): the surfaces touch or interpenetrate";
-    throw NumericalError(os.str());
+  const bool axi = options_.formulation == Formulation::Axisymmetric;
+  auto kernel = [&](int t, Real f[4], Real (*K)[8], Real* Jr) {
+    return axi ? method3Pair<Formulation::Axisymmetric>(z[t], xi, w, law, f, K, Jr)
+               : method3Pair<Formulation::PlaneStrain>(z[t], xi, w, law, f, K, Jr);
+  };
+
+  if (nt == 1) {  // the closest segment alone (no smoothing, or no other segment near)
+    Real K[4][8];
+    const PairState st = kernel(0, out.f, withTangent ? K : nullptr, nullptr);
+    if (!(st.distance > 0.0) || !allFinite(out.f)) throwContact(p, p.targets[0], st.distance);
+    if (withTangent)
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 8; ++j) out.K[i][j] = K[i][j];
+    return st;
   }
-  return st;
+
+  // Softmin blend f = sum_s w_s f_s over rho_s = r_s + delta P_s (see the
+  // header). The targets come from the last updatePairs; the weights use the
+  // current coordinates. Jrho[t]: d rho_t / dz in columns of out.colNodes.
+  constexpr int kCols = 2 * kMaxContributionNodes;
+  Real f[kMaxBlendTargets][4], K[kMaxBlendTargets][4][8], rho[kMaxBlendTargets];
+  Real Jrho[kMaxBlendTargets][kCols] = {};
+  PairState st[kMaxBlendTargets];
+  const Real delta = smoothing_;
+  int closest = 0;
+  for (int t = 0; t < nt; ++t) {
+    Real Jr[8], Jp[8];
+    st[t] = kernel(t, f[t], withTangent ? K[t] : nullptr, Jr);
+    if (!(st[t].distance > 0.0) || !allFinite(f[t])) throwContact(p, p.targets[t], st[t].distance);
+    const Real x[2] = {(1.0 - xi) * z[t][0] + xi * z[t][2], (1.0 - xi) * z[t][1] + xi * z[t][3]};
+    LocalIndex far;
+    rho[t] = st[t].distance + vertexPenalty(coords, p.otherBody, p.targets[t], x, st[t].region,
+                                            withTangent ? Jp : nullptr, withTangent ? &far : nullptr);
+    if (rho[t] < rho[closest]) closest = t;
+    if (!withTangent) continue;
+    const int farCol = far >= 0 ? column(far) : -1;
+    for (int i = 0; i < 2; ++i) {
+      Jrho[t][i] += Jr[i] + (1.0 - xi) * Jp[i];
+      Jrho[t][2 + i] += Jr[2 + i] + xi * Jp[i];
+      for (int a = 0; a < 2; ++a) Jrho[t][2 * col[t][a] + i] += Jr[4 + 2 * a + i] + Jp[2 + 2 * a + i];
+      if (farCol >= 0) Jrho[t][2 * farCol + i] += Jp[6 + i];
+    }
+  }
+  out.numColNodes = nc;
+  Real wt[kMaxBlendTargets], sum = 0.0;
+  for (int t = 0; t < nt; ++t) sum += (wt[t] = std::exp(-(rho[t] - rho[closest]) / delta));
+  for (int t = 0; t < nt; ++t) wt[t] /= sum;
+  for (int i = 0; i < 4; ++i) {
+    out.f[i] = 0.0;
+    for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];
+  }
+  if (!withTangent) return st[closest];
+
+  // K = sum_s w_s K_s + sum_s f_s (x) dw_s with dw_s = (w_s/delta)(-drho_s + sum_t w_t drho_t), i.e.
+  // K = sum_s w_s [K_s + (f - f_s) (x) drho_s / delta]  (no cancellation of terms of size f/delta)
+  const int ncol = 2 * nc;
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < ncol; ++c) out.K[i][c] = 0.0;
+  for (int t = 0; t < nt; ++t) {
+    for (int j = 0; j < 8; ++j) {
+      const int c = j < 4 ? j : 2 * col[t][(j - 4) / 2] + j % 2;
+      for (int i = 0; i < 4; ++i) out.K[i][c] += wt[t] * K[t][i][j];
+    }
+    for (int i = 0; i < 4; ++i) {
+      const Real g = wt[t] * (out.f[i] - f[t][i]) / delta;
+      for (int c = 0; c < ncol; ++c) out.K[i][c] += g * Jrho[t][c];
+    }
+  }
+  return st[closest];
 }
 
 void SurfaceInteraction::beginEvaluation() {

@@ -1,6 +1,7 @@
 // Closest-point search: binned SegmentSearch2D against brute force.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -208,6 +209,40 @@ TEST(ClosestPointSearch, FacetsNearMatchesBruteForceAndCoversTrueNeighbours) {
   }
 }
 
+TEST(ClosestPointSearch, FacetsNearPointListsEveryFacetWithinTheRadius) {
+  // the tree lists exactly the facets within the radius; the others (the
+  // default: facetsNear of the point's box) a superset
+  std::vector<Real> coords;
+  const mesh::Surface surf = addPolyline(coords, wavyCurve(200), 0);
+  for (auto& search : accelerated()) {
+    ClosestPointSearch& s = *search;
+    s.build(coords, surf);
+    const bool exact = dynamic_cast<SegmentTreeSearch2D*>(&s) != nullptr;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<Real> u(-1.0, 5.0), w(0.0, 0.5);
+    for (int i = 0; i < 500; ++i) {
+      const Real x[2] = {u(rng), u(rng) - 1.0};
+      const Real radius = w(rng);
+      std::vector<LocalIndex> near;
+      s.facetsNearPoint(x, radius, near);
+      std::sort(near.begin(), near.end());
+      for (LocalIndex e = 0; e < s.numFacets(); ++e) {
+        Real xi, p[2];
+        int region;
+        const bool within = projectOntoSegment(x, &coords[2 * e], &coords[2 * e + 2], xi, p, region) <=
+                            radius * radius;
+        const bool listed = std::binary_search(near.begin(), near.end(), e);
+        if (within) {
+          EXPECT_TRUE(listed) << e;
+        }
+        if (exact) {
+          EXPECT_EQ(listed, within) << e;
+        }
+      }
+    }
+  }
+}
+
 TEST(ClosestPointSearch, EmptySurfaceAndInvalidInput) {
   std::vector<Real> coords = {0.0, 0.0};
   mesh::Surface empty;
@@ -221,6 +256,8 @@ TEST(ClosestPointSearch, EmptySurfaceAndInvalidInput) {
     EXPECT_FALSE(search->project(x, std::numeric_limits<Real>::infinity()).found());
     std::vector<LocalIndex> near;
     search->facetsNear(x, x, 1.0, near);
+    EXPECT_TRUE(near.empty());
+    search->facetsNearPoint(x, 1.0, near);
     EXPECT_TRUE(near.empty());
     EXPECT_THROW(search->build(coords, tri), InputError);
   }

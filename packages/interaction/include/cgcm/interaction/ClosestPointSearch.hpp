@@ -46,6 +46,11 @@ class ClosestPointSearch {
   /// within `radius` of any point of the box [lo, hi].
   virtual void facetsNear(const Real* lo, const Real* hi, Real radius,
                           std::vector<LocalIndex>& out) const = 0;
+  /// Appends to `out` every facet within `radius` of the point x, and
+  /// possibly a few farther ones (the default: facetsNear of the box [x, x]).
+  virtual void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
+    facetsNear(x, x, radius, out);
+  }
 };
 
 /// Point-to-segment projection with clamping, shared by the search and the
@@ -119,6 +124,8 @@ class SegmentTreeSearch2D final : public ClosestPointSearch {
   LocalIndex numFacets() const override { return LocalIndex(ids_.size()); }
   Projection project(const Real* x, Real cutoff) const override;
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
+  /// Exactly the facets within `radius` of x (boxes farther are pruned).
+  void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:
   struct Node {

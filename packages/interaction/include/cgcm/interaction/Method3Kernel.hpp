@@ -41,13 +41,43 @@ struct PairState {
   int region = 0;       ///< 0: projection inside s; 1, 2: vertex a, b of s
 };
 
+/// Distance o >= 0 by which the unclamped projection of x onto the line of
+/// the segment a -> b lies beyond the segment's end `end` (0: a, 1: b); 0
+/// when it lies on the segment's side of that end. With g (may be null) also
+/// do/d(x, a, b), 6 entries. o is continuous, o^2 continuously differentiable.
+KOKKOS_INLINE_FUNCTION Real overshootBeyondEnd(const Real x[2], const Real a[2], const Real b[2], int end,
+                                               Real g[6]) {
+  const Real d0 = b[0] - a[0], d1 = b[1] - a[1];
+  const Real L = std::sqrt(d0 * d0 + d1 * d1);
+  const Real e[2] = {d0 / L, d1 / L}, p[2] = {x[0] - a[0], x[1] - a[1]};
+  const Real s = p[0] * e[0] + p[1] * e[1];  // signed distance of the foot from a
+  const Real o = end == 0 ? -s : s - L;
+  if (g != nullptr) {
+    for (int i = 0; i < 6; ++i) g[i] = 0.0;
+    if (o > 0.0) {
+      // end a: o = -(x - a).e, end b: o = (x - b).e, with de = P (db - da)/L,
+      // P = I - e e^T, and (x - a) P = (x - b) P = p_perp
+      const Real sign = end == 0 ? -1.0 : 1.0;
+      const Real q[2] = {(p[0] - s * e[0]) / L, (p[1] - s * e[1]) / L};  // p_perp / L
+      for (int i = 0; i < 2; ++i) {
+        g[i] = sign * e[i];
+        g[2 + i] = (end == 0 ? e[i] : 0.0) - sign * q[i];
+        g[4 + i] = (end == 1 ? -e[i] : 0.0) + sign * q[i];
+      }
+    }
+  }
+  return o > 0.0 ? o : 0.0;
+}
+
 /// Evaluates one pair. `law(r, T, dT)` gives the traction T(r) and dT/dr.
 /// f receives the 4 residual entries [a_x, a_y, b_x, b_y] of segment e's
-/// nodes; K (may be null) the 4 x 8 derivative with respect to z. The caller
-/// checks state.distance > 0 (r = 0: the point lies on the other surface).
+/// nodes; K (may be null) the 4 x 8 derivative with respect to z; Jr (may be
+/// null, filled only together with K) the gradient dr/dz of the distance.
+/// The caller checks state.distance > 0 (r = 0: the point lies on the other
+/// surface).
 template <Formulation Form, class Law>
 KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weight, const Law& law, Real f[4],
-                                             Real (*K)[8]) {
+                                             Real (*K)[8], Real* Jr = nullptr) {
   constexpr Real twoPi = 6.283185307179586476925286766559;
   PairState st;
   const Real N0 = 1.0 - xi, N1 = xi;
@@ -108,7 +138,8 @@ KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weig
     }
   }
   // r, rbar
-  Real Jr[8], Jrb[2][8];
+  Real JrLocal[8], Jrb[2][8];
+  if (Jr == nullptr) Jr = JrLocal;
   for (int j = 0; j < 8; ++j) {
     const Real g0 = Jx[0][j] - JxP[0][j], g1 = Jx[1][j] - JxP[1][j];
     Jr[j] = rb[0] * g0 + rb[1] * g1;

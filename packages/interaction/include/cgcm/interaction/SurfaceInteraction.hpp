@@ -12,6 +12,33 @@
 //     si.evaluate(coords, contributions);      // f and K of every pair
 // A matrix graph covering all pairs that can appear while the nodes move
 // by less than (radius - cutoff)/2 comes from couplings(coords, radius).
+//
+// Smoothed projection: with the closest segment alone, rbar jumps by the
+// corner angle where x crosses the bisector of a concave corner of l's
+// polyline (the closest segment switches between two segments that both
+// hold a foot point), so the residual jumps there and Newton can cycle
+// between the two sides. With projectionSmoothing delta > 0 a point's
+// contribution is the softmin blend over the segments s of l near x,
+//     f = sum_s w_s f_s,  w_s = exp(-rho_s/delta) / sum_t exp(-rho_t/delta),
+// with f_s the pair contribution on s and rho_s = r_s + delta P_s, r_s the
+// clamped distance. Near a concave corner both feet lie inside their
+// segments, P = 0, and the blend is the softmin of the distances:
+// continuous across the bisector. A projection onto a vertex (the foot of
+// the line beyond s's end by o_s) is penalised by
+//     P_s = (o_s/delta)^2 exp(-(o_n/delta)^2),
+// o_n the same overshoot of the neighbour n holding the vertex: such a
+// projection enters only within about delta of the end where the neighbour
+// covers the vertex (flat or concave vertex: o_n = 0; there the closest
+// segment switches without a jump, both projections being the vertex), and
+// fully where both project onto the vertex (o_n > 0: convex vertex, equal
+// contributions). Without the penalty a point at distance r would be blended
+// with every segment within sqrt(2 r c delta) along a flat surface (many on
+// fine meshes), with rbar tilted towards their vertices: a spurious shear.
+// The weights are continuously differentiable in the coordinates, so is the
+// residual wherever it was before (away from the clamping kinks of f_s), and
+// the tangent includes dw_s = (w_s/delta)(-drho_s + sum_t w_t drho_t).
+// Candidates are the segments with rho_s <= rho_min + c delta
+// (c = kSmoothingRange), at most kMaxBlendTargets of them (lowest rho).
 #include <array>
 #include <memory>
 #include <utility>
@@ -40,28 +67,59 @@ struct SurfaceInteractionOptions {
   /// stalls at that level in wide adhesive contacts). 0: sharp cutoff.
   Real cutoffTaper = 0.2;
   SearchMethod search = SearchMethod::Tree;  ///< closest-point search structure
+  /// Default projection smoothing, as a fraction of the potential's r0.
+  static constexpr Real kDefaultProjectionSmoothing = 1e-3;
+  /// Width delta (absolute length) of the softmin blend of the projections
+  /// onto the segments near the closest one (see above). 0: closest segment
+  /// only (the residual jumps at concave corners); < 0 selects the default
+  /// kDefaultProjectionSmoothing * r0. Like the cutoff it scales with
+  /// SurfaceInteraction::setLengthScale. Search radii of the matrix graph
+  /// must exceed cutoff + (kSmoothingRange + 1) delta.
+  Real projectionSmoothing = -1.0;
 };
 
+/// Most segments one quadrature point is blended over; when more have
+/// rho <= rho_min + c delta, those with the lowest rho are kept (counted in
+/// InteractionSummary::numTruncatedBlends).
+constexpr int kMaxBlendTargets = 4;
+/// c: candidates of the blend have rho_s <= rho_min + c delta. A segment
+/// entering the set has weight <= exp(-30) = 9.4e-14 of the largest one,
+/// below the rounding of the assembled residual, so the (discrete) set can
+/// change between evaluations without a visible jump; a larger c only adds
+/// candidates.
+constexpr Real kSmoothingRange = 30.0;
+/// Columns of one blended contribution: the point's segment nodes, two per
+/// target segment and the far node of a target's neighbour when the target
+/// projects onto their common vertex (shared nodes are merged).
+constexpr int kMaxContributionNodes = 2 + 3 * kMaxBlendTargets;
+
 /// One interaction pair: quadrature point `qp` of segment `facet` of body
-/// `body` projects onto segment `target` of body `otherBody`. Segment ids
-/// index the facets of the bodies' surfaces.
+/// `body` and the segments `targets[0 .. numTargets)` of body `otherBody` it
+/// is blended over, lowest rho first (one target without smoothing: the
+/// closest segment, or when no other segment is near). Segment ids index the
+/// facets of the bodies' surfaces.
 struct InteractionPair {
   int body = 0;
   LocalIndex facet = 0;
   int qp = 0;
   int otherBody = 0;
-  LocalIndex target = 0;
+  int numTargets = 1;
+  LocalIndex targets[kMaxBlendTargets] = {};
+  /// The closest segment (the one of largest weight).
+  LocalIndex target() const { return targets[0]; }
 };
 
 /// Contribution of one pair, ready to scatter. Dof ordering is node-major,
 /// 2 components per node: f[2a + i] belongs to rowNodes[a], component i;
-/// K[2a + i][2b + j] = d f[2a + i] / d x_j(colNodes[b]).
-/// colNodes = {rowNodes[0], rowNodes[1], target node a, target node b}.
+/// K[2a + i][2b + j] = d f[2a + i] / d x_j(colNodes[b]), b < numColNodes.
+/// colNodes = {rowNodes[0], rowNodes[1], nodes of the targets in order,
+/// each once}: {rowNodes, target node a, target node b} for one target.
 struct PairContribution {
   LocalIndex rowNodes[2];
-  LocalIndex colNodes[4];
+  int numColNodes = 4;
+  LocalIndex colNodes[kMaxContributionNodes];
   Real f[4];
-  Real K[4][8];
+  Real K[4][2 * kMaxContributionNodes];
 };
 
 /// Counts and diagnostics of the last updatePairs / evaluate.
@@ -76,7 +134,9 @@ struct InteractionSummary {
   LocalIndex numQuadraturePoints = 0;   ///< (point, other body) combinations searched
   LocalIndex numPairs = 0;              ///< within the cutoff (evaluated)
   LocalIndex numBeyondCutoff = 0;       ///< skipped by the cutoff
-  LocalIndex numVertexProjections = 0;  ///< pairs whose projection is a vertex (last evaluate)
+  LocalIndex numBlended = 0;            ///< pairs blended over more than one segment
+  LocalIndex numTruncatedBlends = 0;    ///< pairs with more than kMaxBlendTargets candidates
+  LocalIndex numVertexProjections = 0;  ///< pairs whose closest projection is a vertex (last evaluate)
   Real minDistance = 0.0;               ///< smallest r over the pairs (last evaluate; inf if none)
   /// Per body (index = body id): resultant of the interaction forces applied
   /// to it, sum over its nodes of -f_C (last evaluate; components x, y).
@@ -102,8 +162,11 @@ class SurfaceInteraction {
   int numBodies() const { return int(surfaces_.size()); }
   const mesh::Surface& surface(int body) const { return surfaces_[body]; }
   Real density(int body) const { return densities_[body]; }
-  /// Absolute cutoff in use.
+  /// Absolute cutoff in use (scaled by the length scale).
   Real cutoff() const { return cutoff_; }
+  /// Absolute width delta of the projection blend in use (scaled by the
+  /// length scale; 0: closest segment only).
+  Real projectionSmoothing() const { return smoothing_; }
 
   /// Rebuilds the search structures at `coords` (2 entries per node, global
   /// node ids) and the pair list. Call once per evaluation.
@@ -112,8 +175,10 @@ class SurfaceInteraction {
   const std::vector<InteractionPair>& pairs() const { return pairs_; }
 
   /// Evaluates one pair at `coords` (thread-safe: usable inside a parallel
-  /// loop over pairs()). Without tangent K is left untouched. Returns the
-  /// pair's state; throws NumericalError if r = 0 or the result is not finite.
+  /// loop over pairs()): the blend over its targets, or the single target's
+  /// contribution. Without tangent K is left untouched. Returns the state of
+  /// the target of largest weight; throws NumericalError if r = 0 or the
+  /// result is not finite.
   PairState evaluatePair(const Real* coords, const InteractionPair& pair, PairContribution& out,
                          bool withTangent = true) const;
 
@@ -143,7 +208,8 @@ class SurfaceInteraction {
   /// occur for quadrature points within `radius` of another body: for each
   /// segment e and each segment s of another body whose bounding box comes
   /// within `radius` of e's, the couplings of e's nodes with e's and s's
-  /// nodes. Use radius > cutoff so that the graph survives small motions.
+  /// nodes. Use radius > cutoff + (kSmoothingRange + 1) projectionSmoothing()
+  /// (the farthest blend target) so that the graph survives small motions.
   std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Real* coords, Real radius) const;
   std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const std::vector<Real>& coords,
                                                            Real radius) const {
@@ -152,18 +218,20 @@ class SurfaceInteraction {
 
   const InteractionSummary& summary() const { return summary_; }
 
-  /// Traction law of the bodies k, l: T(r) = beta_k beta_l Phi(r)/beta S(r),
+  /// Traction law of the bodies k, l: T(r) = beta_k beta_l Phi(r/b)/beta S(r),
   /// with the cutoff taper S = 1 below taperStart, 1 - 3 s^2 + 2 s^3 with
-  /// s = (r - taperStart)/(cutoff - taperStart) up to the cutoff, 0 beyond.
+  /// s = (r - taperStart)/(cutoff - taperStart) up to the cutoff, 0 beyond
+  /// (taperStart and cutoff are absolute, i.e. already scaled by b).
   struct Law {
     const PairPotential* potential;
     Real betaProduct;
     Real taperStart;
     Real cutoff;
+    Real lengthScale = 1.0;  ///< b
     void operator()(Real r, Real& T, Real& dT) const {
-      potential->halfSpaceWithDerivative(r, T, dT);
+      potential->halfSpaceWithDerivative(r / lengthScale, T, dT);
       T *= betaProduct;
-      dT *= betaProduct;
+      dT *= betaProduct / lengthScale;
       if (r >= cutoff) {
         T = dT = 0.0;
         return;
@@ -177,7 +245,7 @@ class SurfaceInteraction {
   };
   /// The law between bodies k and l.
   Law law(int k, int l) const {
-    return Law{potential_.get(), strength_ * densities_[k] * densities_[l], taperStart_, cutoff_};
+    return Law{potential_.get(), strength_ * densities_[k] * densities_[l], taperStart_, cutoff_, lengthScale_};
   }
 
   /// Scales every traction by `strength` > 0 (the potential's epsilon times
@@ -185,20 +253,37 @@ class SurfaceInteraction {
   void setStrength(Real strength);
   Real strength() const { return strength_; }
 
+  /// Stretches the traction law by the length b > 0 (default 1): T(r) =
+  /// strength T_1(r/b), T_1 the law at b = 1 including its taper, so the
+  /// cutoff, the taper start and the projection smoothing scale with b. For
+  /// Lennard-Jones this is the potential with r0 b and epsilon / b^3. The
+  /// next updatePairs uses the new cutoff.
+  void setLengthScale(Real b);
+  Real lengthScale() const { return lengthScale_; }
+
  private:
   void beginEvaluation();
   void accumulate(const InteractionPair& p, const PairState& st, const PairContribution& c);
+  void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
+  Real vertexPenalty(const Real* coords, int l, LocalIndex s, const Real x[2], int region, Real* grad,
+                     LocalIndex* far) const;
 
   std::vector<mesh::Surface> surfaces_;
   std::vector<Real> densities_;
   std::shared_ptr<const PairPotential> potential_;
   SurfaceInteractionOptions options_;
   GaussRule rule_;
+  Real cutoff1_ = 0.0, taperStart1_ = 0.0, smoothing1_ = 0.0;  ///< at length scale 1
   Real cutoff_ = 0.0;
   Real taperStart_ = 0.0;
+  Real smoothing_ = 0.0;
   Real strength_ = 1.0;
+  Real lengthScale_ = 1.0;
   std::vector<std::unique_ptr<ClosestPointSearch>> search_;
+  std::vector<std::vector<LocalIndex>> neighbours_;  ///< [body][2 s + end]: segment sharing that node, or -1
   std::vector<InteractionPair> pairs_;
+  std::vector<LocalIndex> near_;                        ///< scratch of findTargets
+  std::vector<std::pair<Real, LocalIndex>> candidates_;  ///< scratch of findTargets: (rho, segment)
   InteractionSummary summary_;
 };
 
