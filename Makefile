@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench paper jkr-study
+.PHONY: demo test build configure deps clean bench paper jkr-study stability-map
 
 deps:
 	@bash scripts/install-deps.sh
@@ -34,6 +34,13 @@ paper: build
 # gammaL, against the Lennard-Jones sphere reference (output/validation/jkr-study).
 jkr-study: build
 	@bash tools/run_jkr_study.sh $(BUILD_DIR)
+
+# The critical gammaW of the jump-to-contact for gammaL = 10 .. 200 (arc-length
+# approaches, bisection with the fold detector): output/stability-map, and
+# the plot into doc/figures.
+stability-map: build
+	/usr/bin/python3 tools/stability_map.py --build $(BUILD_DIR) --output output/stability-map
+	cp output/stability-map/stability_map.png doc/figures/stability-map.png
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

@@ -16,3 +16,5 @@ echo "== one approach-retraction curve of the default deck (split in summary.txt
 cat output/bench-demo/summary.txt
 echo "== Method 3 kernel and search, per pair"
 "$build/bin/bench_interaction_kernel"
+echo "== a path through folds: displacement against arc-length control"
+bash bench/continuation.sh "$build"

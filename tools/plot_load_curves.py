@@ -25,6 +25,28 @@ def read(path):
     return {k: [float(r[k]) for r in rows] for k in rows[0]} if rows else {}
 
 
+def draw(ax, c, y, **kw):
+    """Plots y(u) with the stable parts solid and the unstable ones dashed
+    (a segment is unstable when either end is); folds are marked."""
+    u, stable = c["u"], c.get("stable", [1.0] * len(c["u"]))
+    color = kw.pop("color", None)
+    label = kw.pop("label", None)
+    start = 0
+    for k in range(1, len(u) + 1):
+        seg_unstable = k < len(u) and (stable[k] == 0 or stable[k - 1] == 0)
+        run_unstable = stable[start] == 0 or (start + 1 < len(u) and stable[start + 1] == 0)
+        if k == len(u) or seg_unstable != run_unstable:
+            end = k if k < len(u) else k - 1
+            line, = ax.plot(u[start:end + 1], y[start:end + 1], ls="--" if run_unstable else "-", color=color,
+                            label=label, **kw)
+            color, label = line.get_color(), None
+            start = end
+    for k, f in enumerate(c.get("fold", [])):
+        if f > 0:
+            ax.plot(u[k], y[k], "o", ms=3.5, mfc="none", color=color)
+    return color
+
+
 def minimum(c):
     i = min(range(len(c["P"])), key=lambda k: c["P"][k])
     return c["P"][i], c["u"][i]
@@ -45,17 +67,14 @@ def sweep(folder, prefix):
 def plot_sweep(runs, label, title, out):
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
     for value, c in runs:
-        jumps = [k for k, j in enumerate(c.get("jump", [])) if j > 0]
-        line, = a.plot(c["u"], c["P"], lw=1.2, label=f"{label} = {value}")
-        b.plot(c["u"], c["gap"], lw=1.2, color=line.get_color())
-        for k in jumps:
-            a.plot(c["u"][k], c["P"][k], "o", mfc="none", color=line.get_color())
+        color = draw(a, c, c["P"], lw=1.2, label=f"{label} = {value}")
+        draw(b, c, c["gap"], lw=1.2, color=color)
     for ax in (a, b):
         ax.set_xlim(-0.1, 0.065)  # the window of the paper's figures: adhesion and contact phases
     a.set_xlabel("u / R0")
     a.set_ylabel("P R0 / E0")
     a.axhline(0.0, color="k", lw=0.5)
-    a.set_title("load")
+    a.set_title("load (dashed: unstable under displacement control; o: folds)")
     a.legend(fontsize=8)
     b.set_xlabel("u / R0")
     b.set_ylabel("gap / R0")
@@ -81,12 +100,12 @@ def main():
             runs = sweep(folder, prefix)
             if not runs:
                 continue
-            print(f"{prefix}: {label:>7} {'P_min':>13} {'u(P_min)':>11} {'P(u=0.06)':>11} {'jumps':>5}")
+            print(f"{prefix}: {label:>7} {'P_min':>13} {'u(P_min)':>11} {'P(u=0.06)':>11} {'folds':>5}")
             for value, c in runs:
                 p, u = minimum(c)
                 end = [c["P"][k] for k in range(len(c["u"])) if abs(c["u"][k] - 0.06) < 1e-9]
                 print(f"{'':12}{value:>8} {p:13.5e} {u:11.5f} {end[0] if end else float('nan'):11.5e} "
-                      f"{int(sum(c.get('jump', [])))}")
+                      f"{int(sum(c.get('fold', [])))}")
             if args.figures:
                 os.makedirs(args.figures, exist_ok=True)
                 plot_sweep(runs, label, title, os.path.join(args.figures, prefix + ".png"))
@@ -94,7 +113,7 @@ def main():
         fig, a = plt.subplots(figsize=(6, 4))
         for path in csvs:
             c = read(path)
-            a.plot(c["u"], c["P"], lw=1.2, label=os.path.basename(os.path.dirname(os.path.abspath(path))))
+            draw(a, c, c["P"], lw=1.2, label=os.path.basename(os.path.dirname(os.path.abspath(path))))
             p, u = minimum(c)
             print(f"{path}: P_min = {p:.6e} at u = {u:.6f}")
         a.set_xlabel("u / R0")

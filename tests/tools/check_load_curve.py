@@ -14,6 +14,18 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
   jumps   CSV --expected N [--contact-gap G]
       exactly N states marked as jumps; with --contact-gap, the first jump lands
       in contact (gap < G) and the last one out of it (gap > G)
+  folds   CSV --expected N [--unstable]
+      exactly N fold rows; with --unstable, unstable rows (stable = 0) lie
+      between consecutive folds and nowhere else
+  converged CSV --tolerance T [--summary SUMMARY --stopped]
+      every row's residual is <= T (the absolute force tolerance the run
+      printed); with --summary, its first line says "completed" (or, with
+      --stopped, "stopped: ...")
+  agree   A.csv B.csv --at U [U ...] [--tolerance REL] [--abs ABS]
+      P of the last row at each u = U agrees between the two curves
+  foldsmatch ARC.csv DISP.csv [--tolerance T]
+      the folds of an arc-length curve that end stable branches are where the
+      displacement-controlled curve jumps (fold rows of both at the same u within T)
 """
 import argparse
 import csv
@@ -84,6 +96,67 @@ def jumps(c, a):
     return 0 if ok else 1
 
 
+def folds(c, a):
+    idx = [k for k, f in enumerate(c["fold"]) if f > 0]
+    print("folds at u = " + ", ".join(f"{c['u'][k]:.9g} (P {c['P'][k]:.6g})" for k in idx))
+    ok = len(idx) == a.expected
+    if ok and a.unstable:
+        for k, s in enumerate(c["stable"]):
+            inside = sum(1 for f in idx if f < k) % 2 == 1
+            if (s == 0) != inside and k not in idx:
+                print(f"row {k} (u = {c['u'][k]:.9g}) has stable = {s:g} but lies {'between' if inside else 'outside'} folds")
+                ok = False
+    return 0 if ok else 1
+
+
+def converged(c, a):
+    worst = max(c["residual"])
+    print(f"largest residual {worst:.3g} over {len(c['residual'])} rows (tolerance {a.tolerance:.3g})")
+    ok = worst <= a.tolerance
+    if a.summary:
+        with open(a.summary) as f:
+            first = f.readline().strip()
+        print(f"summary: {first}")
+        ok = ok and (first.startswith("stopped:") if a.stopped else first == "completed")
+    return 0 if ok else 1
+
+
+def last_at(c, u):
+    k = max((i for i, v in enumerate(c["u"]) if abs(v - u) <= 1e-12 * max(1.0, abs(u))), default=None)
+    return None if k is None else c["P"][k]
+
+
+def agree(a):
+    ca, cb = read(a.csv), read(a.other)
+    ok = True
+    for u in a.at:
+        pa, pb = last_at(ca, u), last_at(cb, u)
+        if pa is None or pb is None:
+            print(f"no state at u = {u} in {'the first' if pa is None else 'the second'} curve")
+            ok = False
+            continue
+        diff = abs(pa - pb)
+        good = diff <= a.abs + a.tolerance * max(abs(pa), abs(pb))
+        print(f"u = {u}: P = {pa:.12g} and {pb:.12g}, difference {diff:.3g} ({'ok' if good else 'too large'})")
+        ok = ok and good
+    return 0 if ok else 1
+
+
+def foldsmatch(a):
+    arc, disp = read(a.csv), read(a.other)
+    n = len(arc["u"])
+    starts = [arc["u"][k] for k in range(1, n) if arc["fold"][k] > 0 and arc["stable"][k - 1] > 0
+              and arc["fold"][k - 1] == 0]
+    jumps = [disp["u"][k] for k in range(len(disp["u"])) if disp["fold"][k] > 0]
+    print("arc-length folds ending stable branches at u = " + ", ".join(f"{u:.9g}" for u in starts))
+    print("displacement-control folds (jumps) at u = " + ", ".join(f"{u:.9g}" for u in jumps))
+    if len(starts) != len(jumps):
+        return 1
+    worst = max((abs(x - y) for x, y in zip(starts, jumps)), default=0.0)
+    print(f"largest difference {worst:.3g} (tolerance {a.tolerance:.3g})")
+    return 0 if worst <= a.tolerance else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -112,9 +185,33 @@ def main():
     j.add_argument("csv")
     j.add_argument("--expected", type=int, required=True)
     j.add_argument("--contact-gap", type=float)
+    f = sub.add_parser("folds")
+    f.add_argument("csv")
+    f.add_argument("--expected", type=int, required=True)
+    f.add_argument("--unstable", action="store_true")
+    cv = sub.add_parser("converged")
+    cv.add_argument("csv")
+    cv.add_argument("--tolerance", type=float, required=True)
+    cv.add_argument("--summary")
+    cv.add_argument("--stopped", action="store_true")
+    ag = sub.add_parser("agree")
+    ag.add_argument("csv")
+    ag.add_argument("other")
+    ag.add_argument("--at", type=float, nargs="+", required=True)
+    ag.add_argument("--tolerance", type=float, default=1e-6)
+    ag.add_argument("--abs", type=float, default=0.0)
+    fm = sub.add_parser("foldsmatch")
+    fm.add_argument("csv")
+    fm.add_argument("other")
+    fm.add_argument("--tolerance", type=float, default=1e-9)
     a = ap.parse_args()
+    if a.cmd == "agree":
+        return agree(a)
+    if a.cmd == "foldsmatch":
+        return foldsmatch(a)
     c = read(a.csv)
-    return {"hertz": hertz, "pulloff": pulloff, "value": value, "balance": balance, "jumps": jumps}[a.cmd](c, a)
+    return {"hertz": hertz, "pulloff": pulloff, "value": value, "balance": balance, "jumps": jumps, "folds": folds,
+            "converged": converged}[a.cmd](c, a)
 
 
 if __name__ == "__main__":

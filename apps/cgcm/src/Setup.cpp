@@ -115,9 +115,10 @@ RCP<const ParameterList> validParameters() {
             atLeast(0.0));
   inter.set("gammaW bar", 0.0, "the paper's equivalent parameter; > 0 replaces gammaW through the Barred Convention",
             atLeast(0.0));
-  inter.set("Barred Convention", "identity",
-            "how barred values convert: \"identity\" (gamma = gamma bar, the reading the paper's numbers support) or "
-            "\"literal\" (gammaL = gammaL bar / (3/4)^(1/6), gammaW = gammaW bar / sqrt(3)); see doc/theory.md",
+  inter.set("Barred Convention", "literal",
+            "how the paper's barred values convert: \"literal\" (gammaL = gammaL bar / (3/4)^(1/6), gammaW = "
+            "gammaW bar / sqrt(3), the reading the paper's stability statements and Fig. 11 state support; "
+            "doc/theory.md) or \"identity\" (gamma = gamma bar)",
             choices({"identity", "literal"}));
   inter.set("r0", 0.0, "physical input instead of the gammas: equilibrium distance of the pair potential (> 0 to use)",
             atLeast(0.0));
@@ -129,22 +130,45 @@ RCP<const ParameterList> validParameters() {
             "fraction of the cutoff over which the traction is blended smoothly (C1) to zero, 0 .. 0.9; "
             "0 is a sharp cutoff, whose residual jumps when points cross it",
             between(0.0, 0.9));
+  inter.set("Projection Smoothing", interaction::SurfaceInteractionOptions::kDefaultProjectionSmoothing,
+            "width delta of the blend of a point's projections onto neighbouring segments, in units of r0: near "
+            "a concave corner of the other surface the closest segment switches and the force direction would "
+            "jump; the blend keeps the residual smooth. 0 uses the closest segment alone (the paper's Method 3; "
+            "Newton can then find no equilibrium next to such a switch)",
+            atLeast(0.0));
   inter.set("Search Radius Factor", 2.0, "matrix-graph search radius / cutoff (> 1)", atLeast(1.01));
 
-  valid->sublist("Loading", false,
-                 "displacement control: the load parameter u is the prescribed displacement, stepped along the path")
-      .setParameters(*solver::LoadPathSettings::validParameters());
-  valid->sublist("Loading")
-      .set("Approach Adhesion Scale", 1.0,
-           "(0, 1]: a way into strongly adhesive contact without its jump-to-contact. The first segment of the "
-           "Approach Path runs with the interaction energy epsilon scaled by this factor (w and sigma_max scale "
-           "with it, gammaW is divided by it); at the end of that segment (the second waypoint) the scale grows "
-           "to 1 with u held, and the rest of the path runs at full strength. The first segment goes to "
-           "preparation.csv, the ramp to the log, and load_curve.csv starts at the second waypoint. 1: off",
-           between(1e-6, 1.0));
+  auto& loading = valid->sublist("Loading", false,
+                                 "how the path is followed: the load parameter u is the prescribed displacement");
+  loading.set("Control", "displacement",
+              "\"displacement\": steps in u along the Approach Path; at a fold (jump-to-contact, jump-off-contact) "
+              "the state jumps to the far stable branch at the same u (found by continuation), as under a rigid "
+              "loading device. \"arc-length\": LOCA pseudo-arclength continuation through the folds, the unstable "
+              "branch included (rows with stable = 0)",
+              choices({"displacement", "arc-length"}));
+  loading.setParameters(*solver::LoadPathSettings::validParameters());
+  loading.set("Continuation Parameter", "u",
+              "\"u\": the path is the Approach Path. \"gammaW\" or \"gammaL\": after the Approach Path (at the "
+              "deck's gammas), arc-length continuation in that parameter along the Parameter Path at the last u",
+              choices({"u", "gammaW", "gammaL"}));
+  loading.set("Parameter Path", Teuchos::Array<double>{},
+              "waypoints of the Continuation Parameter when it is not u, e.g. {100, 20}: from the deck's value "
+              "through these; empty for u");
+  loading.set("Parameter Bounds", Teuchos::Array<double>{},
+              "{lower, upper}: the continuation stops as failed if its parameter leaves this range (arc-length "
+              "control and jumps; default: the path's range widened by twice its span on each side)");
+
+  valid->sublist("LOCA", false,
+                 "passed to LOCA's stepper (sublists Stepper, Predictor, Step Size, Bifurcation, ... with LOCA's "
+                 "own names), over cgcm's defaults: Stepper/Continuation Method = Arc Length, Max Steps = 2000; "
+                 "Predictor/Method = Tangent; Step Size/Method = Adaptive, Initial, Min and Max Step Size from "
+                 "Loading/Initial, Min and 2 x Max Increment. cgcm sets Stepper/Continuation Parameter, Initial "
+                 "Value, Min and Max Value and Max Nonlinear Iterations itself; names LOCA does not read are "
+                 "rejected before the run")
+      .disableRecursiveValidation();
 
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");
-  solverList.sublist("Newton", false, "Newton's method (NOX) at each load step")
+  solverList.sublist("Newton", false, "Newton's method (NOX) at each load step and in every continuation corrector")
       .setParameters(*solver::NewtonSettings::validParameters());
   solverList.sublist("Linear Solver", false, "linear solves inside Newton (Stratimikos)")
       .setParameters(*solver::linearSolverValidParameters());
@@ -192,11 +216,12 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   s.options.quadraturePoints = in.get<int>("Quadrature Points");
   s.options.cutoff = in.get<double>("Cutoff") * phys.r0;
   s.options.cutoffTaper = in.get<double>("Cutoff Taper");
+  s.options.projectionSmoothing = in.get<double>("Projection Smoothing") * phys.r0;
   if ((1.0 - s.options.cutoffTaper) * in.get<double>("Cutoff") < 2.0)
     throw InputError("Interaction/Cutoff Taper = " + std::to_string(s.options.cutoffTaper) +
                      " with Interaction/Cutoff = " + std::to_string(in.get<double>("Cutoff")) +
                      " starts the taper below 2 r0, in the range of the repulsion; need (1 - taper) * cutoff >= 2");
-  s.searchRadius = in.get<double>("Search Radius Factor") * s.options.cutoff;
+  s.searchRadiusFactor = in.get<double>("Search Radius Factor");
 
   // Derived scales (THEORY sections 2, 4, 5), for the run's report.
   const Real rS0 = phys.r0 / std::pow(15.0, 1.0 / 6.0);
@@ -207,7 +232,12 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   const Real Estar = Y / (2.0 * (1.0 - nu * nu));
   const Real tabor = std::cbrt(reducedRadius * w * w / (Estar * Estar * rS0 * rS0 * rS0));
   const Real lambda = sigmaMax * std::cbrt(9.0 * reducedRadius / (2.0 * M_PI * w * Estar * Estar));
-  forceScale = 2 * M_PI * w * reducedRadius;
+  // The force unit of the paper, E0/R0 = Y R0^2 (per unit thickness: Y R0), is
+  // the scale of the convergence test: the round-off floor of the residual
+  // comes from the bulk (about 3e-12 Y R0^2 on the level-0 benchmark mesh).
+  forceScale = formulation == assembly::Formulation::PlaneStrain ? Y * R0 : Y * R0 * R0;
+  s.gammaL = gammaL;
+  s.gammaW = gammaW;
   std::ostringstream o;
   o.precision(6);
   o << "gammaL = " << gammaL << ", gammaW = " << gammaW << " (barred, literal reading: "
@@ -228,6 +258,9 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   o << "Lennard-Jones scales: Tabor mu = " << tabor << ", Maugis-Dugdale lambda (theory) = " << lambda
     << ", 2 pi w R = " << 2 * M_PI * w * reducedRadius << ", 1.5 pi w R = " << 1.5 * M_PI * w * reducedRadius
     << " (R = " << reducedRadius << ")";
+  report.push_back(o.str());
+  o.str("");
+  o << "force unit F_ref = Y R0^2 = " << forceScale << " (per unit thickness in plane strain: Y R0)";
   report.push_back(o.str());
   return s;
 }
@@ -325,6 +358,7 @@ ProblemSetup buildProblem(const ParameterList& deck) {
       s.conditions = {{"xmin", 0, 0.0, 0.0}, {"ymin", 1, 0.0, 0.0}, {"zmin", 2, 0.0, 0.0}, {"zmax", 2, 0.0, 1.0}};
       if (clamped) s.conditions.insert(s.conditions.end(), {{"zmax", 0, 0.0, 0.0}, {"zmax", 1, 0.0, 0.0}});
       s.load = {"zmax", 2, 1.0};
+      s.forceScale = s.material.youngsModulus() * spec.lx * spec.ly;
     } else {
       mesh::RectangleSpec spec;
       spec.lx = b.get<double>("Length X");
@@ -335,6 +369,8 @@ ProblemSetup buildProblem(const ParameterList& deck) {
       s.conditions = {{"left", 0, 0.0, 0.0}, {"bottom", 1, 0.0, 0.0}, {"top", 1, 0.0, 1.0}};
       if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
       s.load = {"top", 1, 1.0};
+      const Real Y = s.material.youngsModulus();
+      s.forceScale = s.formulation == assembly::Formulation::Axisymmetric ? Y * M_PI * spec.lx * spec.lx : Y * spec.lx;
     }
     if (b.get<double>("Distortion") > 0.0)
       mesh::perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));
@@ -351,12 +387,32 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
     const auto& in = *setup.interaction;
     d.interaction =
         std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities, in.potential, in.options);
-    d.assembler->setInteraction(d.interaction, in.searchRadius);
+    d.assembler->setInteraction(d.interaction, in.searchRadiusFactor);
   }
   d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
   for (const auto& c : setup.conditions)
     d.dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-  d.model = Teuchos::rcp(new solver::ModelEvaluator(d.assembler, d.dirichlet, std::move(linearSolver)));
+  std::vector<solver::ScalarParameter> parameters;
+  if (setup.interaction) {
+    // gammaW = Y / (beta0^2 r0^3 epsilon) at fixed r0: epsilon, hence every
+    // traction, scales with gammaW0 / gammaW.
+    const auto interaction = d.interaction;
+    const Real gammaW0 = setup.interaction->gammaW;
+    parameters.push_back({"gammaW", gammaW0, [interaction, gammaW0](Real gammaW) {
+                            if (!(gammaW > 0.0)) throw NumericalError("gammaW = " + std::to_string(gammaW) + " <= 0");
+                            interaction->setStrength(gammaW0 / gammaW);
+                          }});
+    // gammaL = R0 / r0 at fixed gammaW: r0 scales with gammaL0 / gammaL and
+    // epsilon r0^3 stays, so the traction law is T0(r / b) (cutoff included);
+    // u keeps the origin of the deck's gammaL.
+    const Real gammaL0 = setup.interaction->gammaL;
+    parameters.push_back({"gammaL", gammaL0, [interaction, gammaL0](Real gammaL) {
+                            if (!(gammaL > 0.0)) throw NumericalError("gammaL = " + std::to_string(gammaL) + " <= 0");
+                            interaction->setLengthScale(gammaL0 / gammaL);
+                          }});
+  }
+  d.model = Teuchos::rcp(new solver::ModelEvaluator(d.assembler, d.dirichlet, std::move(linearSolver),
+                                                    std::move(parameters)));
   return d;
 }
 

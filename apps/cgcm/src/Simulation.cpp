@@ -6,13 +6,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <memory>
 
+#include "cgcm/app/PathAnalysis.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/ClosestPointSearch.hpp"
 #include "cgcm/io/CsvWriter.hpp"
 #include "cgcm/io/Deck.hpp"
+#include "cgcm/solver/Continuation.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
 
@@ -71,39 +75,123 @@ class ContactProbe {
   LocalIndex upper_, lower_;
 };
 
-// Grows the interaction strength from `from` to 1 with the Dirichlet data
-// held, in adaptive steps; throws NumericalError if a step fails below 1e-4
-// of the range.
-void rampInteractionStrength(interaction::SurfaceInteraction& interaction, solver::NewtonSolver& newton, Vector& u,
-                             Real from, bool print, std::ostream& log) {
-  Vector trial(u.getMap());
-  Real s = from, ds = (1.0 - from) / 8.0;
-  const Real dsMin = 1e-4 * (1.0 - from);
-  std::string failure;
-  while (s < 1.0) {
-    const Real next = (1.0 - s) < 1.05 * ds ? 1.0 : s + ds;
-    interaction.setStrength(next);
-    trial.assign(u);
-    const auto r = newton.solve(trial);
-    if (!r.converged || r.stalled) {
-      failure = r.stalled ? "Newton cycle" : r.failure;
-      ds *= 0.5;
-      if (ds < dsMin) {
-        interaction.setStrength(s);
-        throw NumericalError("adhesion ramp failed between scales " + std::to_string(s) + " and " +
-                             std::to_string(next) + " (" + failure + ")");
-      }
-      continue;
-    }
-    u.assign(trial);
-    s = next;
-    if (print) {
-      char line[160];
-      std::snprintf(line, sizeof line, "ramp      adhesion scale = %.6f  newton %2d\n", s, r.iterations);
-      log << line << std::flush;
-    }
-    if (r.iterations <= 4) ds *= 1.5;
+// Turns converged states into load-curve rows: the force responses, the CSV
+// row (flushed, so a run that stops leaves a valid file) and a progress line.
+class Recorder {
+ public:
+  Recorder(const ProblemSetup& setup, solver::ModelEvaluator& model, const ContactProbe* probe,
+           const std::string& path, int parameterIndex, bool root, bool print, std::ostream& log)
+      : setup_(setup), model_(model), probe_(probe), parameterIndex_(parameterIndex), root_(root), print_(print),
+        log_(log), f_(model.map()) {
+    columns_ = {"step", "u"};
+    if (parameterIndex_ > 0) columns_.push_back(model.parameterNames()[parameterIndex_]);
+    columns_.push_back("P");
+    if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius", "P_lower"});
+    columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
+    if (root_) csv_ = std::make_unique<io::CsvWriter>(path, columns_);
   }
+
+  /// Records the state x at parameters p; `row` carries step, flags and solver figures. Collective.
+  void record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
+    model_.evaluateUnconstrained(x, p, f_);
+    const auto& loadNodes = setup_.mesh->nodeSet(setup_.load.nodeSet);
+    row.u = p[0];
+    row.parameter = p[std::size_t(std::max(parameterIndex_, 0))];
+    row.P = setup_.load.sign * model_.assembler().sumOverNodes(f_, loadNodes, setup_.load.component);
+    if (probe_) {
+      row.gap = probe_->gap(x);
+      row.contactRadius = probe_->contactRadius(x);
+      row.Plower = setup_.balance->sign * model_.assembler().sumOverNodes(
+                                              f_, setup_.mesh->nodeSet(setup_.balance->nodeSet),
+                                              setup_.balance->component);
+    }
+    curve.push_back(row);
+    if (!root_) return;
+    std::vector<double> values{double(row.step), row.u};
+    if (parameterIndex_ > 0) values.push_back(row.parameter);
+    values.push_back(row.P);
+    if (probe_) values.insert(values.end(), {row.gap, row.contactRadius, row.Plower});
+    values.insert(values.end(), {double(row.newtonIterations), row.stable ? 1.0 : 0.0, row.fold ? 1.0 : 0.0,
+                                 row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
+    csv_->row(values);
+    if (!print_) return;
+    char line[300];
+    std::string extra;
+    if (parameterIndex_ > 0) extra = "  " + columns_[2] + " = " + std::to_string(row.parameter);
+    if (probe_) extra += "  gap = " + std::to_string(row.gap);
+    std::snprintf(line, sizeof line, "step %4d  u = %+.6e%s  P = %+.6e  newton %2d  |f| = %.2e%s%s%s%s\n", row.step,
+                  row.u, extra.c_str(), row.P, row.newtonIterations, row.residual, row.stable ? "" : "  unstable",
+                  row.fold ? "  FOLD" : "", row.jump ? "  JUMP" : "",
+                  row.cutbacks ? ("  (" + std::to_string(row.cutbacks) + " cut-backs)").c_str() : "");
+    log_ << line << std::flush;
+  }
+
+  std::vector<LoadPoint> curve;
+
+ private:
+  const ProblemSetup& setup_;
+  solver::ModelEvaluator& model_;
+  const ContactProbe* probe_;
+  int parameterIndex_;
+  bool root_, print_;
+  std::ostream& log_;
+  Vector f_;
+  std::vector<std::string> columns_;
+  std::unique_ptr<io::CsvWriter> csv_;
+};
+
+// What the Loading sublist asks for, checked before any work.
+struct PathPlan {
+  bool arcLength = false;
+  solver::LoadPathSettings path;
+  std::string parameter = "u";
+  std::vector<Real> parameterPath;  ///< waypoints of the parameter (not u)
+  std::vector<Real> bounds;         ///< {lower, upper} or empty
+};
+
+PathPlan planPath(const Teuchos::ParameterList& loading, const ProblemSetup& setup) {
+  PathPlan plan;
+  plan.arcLength = loading.get<std::string>("Control") == "arc-length";
+  plan.path = solver::LoadPathSettings::fromParameters(loading);
+  plan.parameter = loading.get<std::string>("Continuation Parameter");
+  const auto& pp = loading.get<Teuchos::Array<double>>("Parameter Path");
+  plan.parameterPath.assign(pp.begin(), pp.end());
+  const auto& b = loading.get<Teuchos::Array<double>>("Parameter Bounds");
+  plan.bounds.assign(b.begin(), b.end());
+  if (plan.parameter != "u" && !setup.interaction)
+    throw InputError("Loading/Continuation Parameter = \"" + plan.parameter +
+                     "\" needs an interaction between bodies (a sphere geometry); allowed here: \"u\"");
+  if (plan.parameter == "u" && !plan.parameterPath.empty())
+    throw InputError("Loading/Parameter Path: only with a Continuation Parameter other than \"u\"; the path in u "
+                     "is Loading/Approach Path");
+  if (plan.parameter != "u" && plan.parameterPath.empty())
+    throw InputError("Loading/Parameter Path: give the waypoints of " + plan.parameter + " (e.g. {100, 20})");
+  for (std::size_t i = 0; i < plan.parameterPath.size(); ++i)
+    if (!std::isfinite(plan.parameterPath[i]) || !(plan.parameterPath[i] > 0.0))
+      throw InputError("Loading/Parameter Path: waypoint " + std::to_string(i) + " = " +
+                       std::to_string(plan.parameterPath[i]) + "; " + plan.parameter + " must be finite and > 0");
+  if (!plan.bounds.empty()) {
+    if (plan.bounds.size() != 2 || !(plan.bounds[0] < plan.bounds[1]) || !std::isfinite(plan.bounds[0]) ||
+        !std::isfinite(plan.bounds[1]))
+      throw InputError("Loading/Parameter Bounds: give {lower, upper} with lower < upper (finite), or leave it empty");
+    const auto& wp = plan.parameter == "u" ? plan.path.path : plan.parameterPath;
+    for (Real v : wp)
+      if (v < plan.bounds[0] || v > plan.bounds[1])
+        throw InputError("Loading/Parameter Bounds: the path value " + std::to_string(v) + " lies outside {" +
+                         std::to_string(plan.bounds[0]) + ", " + std::to_string(plan.bounds[1]) + "}");
+  }
+  return plan;
+}
+
+// The bound beyond which a continuation segment from `start` towards
+// `target` counts as run away: the deck's bounds, or the path's range widened
+// by twice its span (positive parameters stay above a thousandth of the path's smallest value).
+Real runawayBound(const PathPlan& plan, const std::vector<Real>& waypoints, Real direction, bool positive) {
+  if (!plan.bounds.empty()) return direction > 0 ? plan.bounds[0] : plan.bounds[1];
+  const auto [lo, hi] = std::minmax_element(waypoints.begin(), waypoints.end());
+  const Real span = *hi - *lo;
+  if (direction > 0) return positive ? std::max(*lo - 2.0 * span, 1e-3 * *lo) : *lo - 2.0 * span;
+  return *hi + 2.0 * span;
 }
 
 }  // namespace
@@ -117,179 +205,214 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 
   // Everything that can be rejected is checked before any work starts.
   ProblemSetup setup = buildProblem(deck);
-  const auto loading = solver::LoadPathSettings::fromParameters(deck.sublist("Loading"));
-  const Real approachScale = deck.sublist("Loading").get<double>("Approach Adhesion Scale");
-  if (approachScale < 1.0 && !setup.interaction)
-    throw InputError("Loading/Approach Adhesion Scale < 1 needs an interaction between bodies (Geometry/Type = "
-                     "\"sphere on half-space\" or \"sphere on sphere\")");
-  if (approachScale < 1.0 && loading.path.size() < 3)
-    throw InputError("Loading/Approach Adhesion Scale < 1 needs an Approach Path of at least three waypoints: the "
-                     "approach at reduced adhesion ends at the second, the recorded path starts there");
+  const PathPlan plan = planPath(deck.sublist("Loading"), setup);
   auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
-  newtonSettings.stallTolerance = newtonSettings.relativeStallTolerance * setup.forceScale;
-  if (setup.interaction) newtonSettings.stallUpdateTolerance = 0.1 * setup.interaction->potential->r0();
+  newtonSettings.forceScale = setup.forceScale;
   const int dim = assembly::formulationDim(setup.formulation);
   auto linearSolver =
       solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize(), dim);
   for (const auto& c : setup.conditions) setup.mesh->nodeSet(c.nodeSet);
+  Teuchos::ParameterList loca = deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA");
+  {
+    // Step sizes in the problem's units unless the deck gives LOCA's own.
+    auto& step = loca.sublist("Step Size");
+    if (!step.isParameter("Min Step Size")) step.set("Min Step Size", plan.path.minIncrement);
+    if (!step.isParameter("Max Step Size") && plan.parameter == "u") step.set("Max Step Size", plan.path.maxIncrement);
+  }
 
   if (root) {
-    std::filesystem::create_directories(dir);
+    try {
+      std::filesystem::create_directories(dir);
+    } catch (const std::filesystem::filesystem_error& e) {
+      throw InputError("Output/Directory = \"" + dir + "\": cannot create it (" + e.code().message() + ")");
+    }
     io::writeDeck(deck, dir + "/parameters.xml");
   }
   comm->barrier();
 
   const Discretization disc = discretize(comm, setup, linearSolver);
-  const auto& dofs = disc.dofs;
   const auto& assembler = disc.assembler;
   const auto& model = disc.model;
   solver::NewtonSolver newton(model, newtonSettings);
+  solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
   std::unique_ptr<ContactProbe> probe;
   if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *setup.mesh, *assembler);
+  const int parameterIndex = model->parameterIndex(plan.parameter);
 
   if (root && printSteps) {
     log << "cgcm: " << assembly::formulationName(setup.formulation) << ", " << setup.mesh->numNodes() << " nodes, "
-        << setup.mesh->numCells() << " cells, " << dofs->ownedMap()->getGlobalNumElements() << " dofs, "
-        << comm->getSize() << " rank(s)\n";
+        << setup.mesh->numCells() << " cells, " << disc.dofs->ownedMap()->getGlobalNumElements() << " dofs, "
+        << comm->getSize() << " rank(s); " << (plan.arcLength ? "arc-length" : "displacement") << " control\n";
     for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
+    log << "cgcm: a state is accepted when |f|_2 <= " << newtonSettings.tolerance() << " (Residual Tolerance "
+        << newtonSettings.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
   }
 
-  std::vector<std::string> columns{"step", "u", "P"};
-  if (probe) columns.insert(columns.end(), {"gap", "contact_radius", "P_lower"});
-  columns.insert(columns.end(), {"newton_iterations", "jump", "residual", "stalled", "cutbacks"});
-  // Both files exist from the start, so a run that stops early never leaves an older run's curve behind.
-  std::unique_ptr<io::CsvWriter> curveCsv, preparationCsv;
-  if (root) curveCsv = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns);
-  if (root && approachScale < 1.0)
-    preparationCsv = std::make_unique<io::CsvWriter>(dir + "/preparation.csv", columns);
-  bool preparing = approachScale < 1.0;  // states of the reduced-adhesion approach are not part of the result
-
-  RunResult result;
+  // The initial guess: the prescribed motion of whole bodies at the first u.
   Vector u(model->map());
   if (!setup.initialMotion.empty()) {
-    assembly::DirichletConditions motion(dofs);
+    assembly::DirichletConditions motion(disc.dofs);
     for (const auto& c : setup.initialMotion)
       motion.add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-    motion.impose(loading.path.front(), u);
+    motion.impose(plan.path.path.front(), u);
   }
-  Vector f(model->map());
-  const auto& loadNodes = setup.mesh->nodeSet(setup.load.nodeSet);
-  auto observe = [&](const solver::StepInfo& info, const Vector& uSolved) {
-    model->evaluateUnconstrained(uSolved, f);
-    const Real P = setup.load.sign * assembler->sumOverNodes(f, loadNodes, setup.load.component);
-    const Real res = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
-    LoadPoint pt{info.step, info.load, P, 0.0, 0.0, info.newton.iterations, info.jump, res};
-    Real Plower = 0.0;
-    if (probe) {
-      pt.gap = probe->gap(uSolved);
-      pt.contactRadius = probe->contactRadius(uSolved);
-      Plower = setup.balance->sign * assembler->sumOverNodes(f, setup.mesh->nodeSet(setup.balance->nodeSet),
-                                                             setup.balance->component);
-    }
-    if (!preparing) {
-      result.curve.push_back(pt);
-      result.stalledSteps += info.newton.stalled ? 1 : 0;
-    }
-    if (!root) return;
-    std::vector<double> row{double(info.step), info.load, P};
-    if (probe) row.insert(row.end(), {pt.gap, pt.contactRadius, Plower});
-    row.insert(row.end(), {double(info.newton.iterations), info.jump ? 1.0 : 0.0, res,
-                           info.newton.stalled ? 1.0 : 0.0, double(info.cutbacks)});
-    (preparing ? preparationCsv : curveCsv)->row(row);
-    if (printSteps) {
-      char line[240];
-      std::snprintf(line, sizeof line, "%s %4d  u = %+.6e  P = %+.6e%s  newton %2d  |f| = %.2e%s%s%s\n",
-                    preparing ? "approach" : "step", info.step, info.load, P, probe ? ("  gap = " + std::to_string(pt.gap)).c_str() : "",
-                    info.newton.iterations, res, info.newton.stalled ? " (stalled)" : "",
-                    info.cutbacks ? ("  (" + std::to_string(info.cutbacks) + " cut-backs)").c_str() : "",
-                    info.jump ? "  JUMP" : "");
-      log << line << std::flush;
-    }
+  model->setLoad(plan.path.path.front());
+  if (plan.arcLength || plan.parameter != "u") continuation.validate(u);  // LOCA reads its list: typos stop here
+
+  Recorder recorder(setup, *model, probe.get(), dir + "/load_curve.csv", parameterIndex, root, printSteps, log);
+  RunResult result;
+  int step = 0;
+  bool stable = true;
+  auto recordPoint = [&](const solver::PathPoint& pt) {
+    LoadPoint row;
+    row.step = ++step;
+    row.newtonIterations = pt.iterations;
+    row.stable = pt.stable;
+    row.fold = pt.fold;
+    row.residual = pt.residual;
+    recorder.record(*pt.x, pt.p, row);
+    stable = pt.stable;
+  };
+  // One continuation segment from the current state; throws NumericalError if it stops.
+  auto continueTo = [&](int parameter, Real target, const std::vector<Real>& waypoints, Real initialStep) {
+    const Real from = model->parameter(parameter);
+    solver::ContinuationSegment segment;
+    segment.parameter = parameter;
+    segment.target = target;
+    segment.direction = target > from ? 1.0 : -1.0;
+    segment.bound = runawayBound(plan, waypoints, segment.direction, parameter > 0);
+    segment.initialStep = std::min(initialStep, std::abs(target - from));
+    segment.stableStart = stable;
+    const auto r = continuation.run(u, segment, recordPoint);
+    result.continuationSteps += r.steps;
+    result.graphRestarts += r.restarts;
+    if (!r.reached) throw NumericalError(r.failure);
+    u.assign(*r.last.x);
+    for (std::size_t k = 0; k < r.last.p.size(); ++k) model->setParameter(int(k), r.last.p[k]);
   };
 
-  Real lastLoad = loading.path.front();
-  auto runPath = [&](const solver::LoadPathSettings& settings) {
-    solver::LoadStepper stepper(model, newton, settings);
-    if (probe) {
-      // A state that moved much more than the prescribed displacement left its branch.
-      const Real floor = 0.05 * setup.interaction->potential->r0();
-      stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
-        const Real du = std::abs(model->load() - lastLoad);
-        return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
-      });
-      stepper.setJumpStepLimit(0.1 * setup.interaction->potential->r0());
-    }
-    stepper.run(u, [&](const solver::StepInfo& info, const Vector& uSolved) {
-      observe(info, uSolved);
-      lastLoad = info.load;
-    });
-  };
   auto runStart = std::chrono::steady_clock::now();
-  assembly::AssemblyTimings timingsBefore = assembler->timings();
+  const assembly::AssemblyTimings timingsBefore = assembler->timings();
   try {
-    if (preparing) {
-      solver::LoadPathSettings approach = loading;
-      approach.path.resize(2);
-      disc.interaction->setStrength(approachScale);
-      newton.setStallTolerance(approachScale * newtonSettings.stallTolerance);  // the adhesion force scales too
-      runPath(approach);
-      const Real gapBefore = probe ? probe->gap(u) : 0.0;
-      rampInteractionStrength(*disc.interaction, newton, u, approachScale, root && printSteps, log);
-      const Real gapChange = probe ? std::abs(probe->gap(u) - gapBefore) : 0.0;
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
-      if (root && printSteps) {
-        char line[200];
-        std::snprintf(line, sizeof line, "cgcm: preparation (approach and ramp) %.3f s; the ramp moved the gap by %.3g r0\n",
-                      seconds, gapChange / setup.interaction->potential->r0());
-        log << line;
+    if (!plan.arcLength) {
+      solver::LoadStepper stepper(model, newton, plan.path, &continuation);
+      if (probe) {
+        // A converged step whose gap moved much more than the prescribed displacement left its branch.
+        const Real floor = 0.05 * setup.interaction->potential->r0();
+        Real lastLoad = plan.path.path.front();
+        stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
+          const Real du = std::abs(model->load() - lastLoad);
+          return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
+        });
+        stepper.run(u, [&](const solver::StepInfo& info, const Vector& state) {
+          LoadPoint row;
+          row.step = step = info.step;
+          row.newtonIterations = info.newton.iterations;
+          row.fold = info.fold;
+          row.jump = info.jump;
+          row.residual = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
+          row.cutbacks = info.cutbacks;
+          auto p = model->parameters();
+          p[0] = info.load;
+          recorder.record(state, p, row);
+          if (!info.fold) lastLoad = info.load;
+        });
+      } else {
+        stepper.run(u, [&](const solver::StepInfo& info, const Vector& state) {
+          LoadPoint row;
+          row.step = step = info.step;
+          row.newtonIterations = info.newton.iterations;
+          row.residual = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
+          row.cutbacks = info.cutbacks;
+          auto p = model->parameters();
+          p[0] = info.load;
+          recorder.record(state, p, row);
+        });
       }
-      preparing = false;
-      newton.setStallTolerance(newtonSettings.stallTolerance);
-      // the summary's time split is that of the recorded path
-      runStart = std::chrono::steady_clock::now();
-      timingsBefore = assembler->timings();
+      for (const auto& j : stepper.jumps()) result.continuationSteps += j.steps, result.graphRestarts += j.restarts;
+    } else {
+      model->dirichlet().impose(plan.path.path.front(), u);
+      const auto first = newton.solve(u);
+      if (!first.converged)
+        throw NumericalError("no equilibrium at the start of the load path, u = " +
+                             std::to_string(plan.path.path.front()) + ": " + first.failure);
+      LoadPoint row;
+      row.newtonIterations = first.iterations;
+      row.residual = first.residualNorms.back();
+      recorder.record(u, model->parameters(), row);
+      for (std::size_t k = 1; k < plan.path.path.size(); ++k)
+        continueTo(0, plan.path.path[k], plan.path.path, plan.path.initialIncrement);
     }
-    solver::LoadPathSettings recorded = loading;
-    if (approachScale < 1.0) recorded.path.erase(recorded.path.begin());
-    runPath(recorded);
+    if (plan.parameter != "u") {
+      std::vector<Real> waypoints{model->parameter(parameterIndex)};
+      waypoints.insert(waypoints.end(), plan.parameterPath.begin(), plan.parameterPath.end());
+      for (std::size_t k = 1; k < waypoints.size(); ++k) {
+        if (waypoints[k] == model->parameter(parameterIndex)) continue;
+        continueTo(parameterIndex, waypoints[k], waypoints,
+                   0.01 * std::abs(waypoints[k] - model->parameter(parameterIndex)));
+      }
+    }
     result.completed = true;
   } catch (const NumericalError& e) {
     result.failure = e.what();
-    if (root) log << "cgcm: stopped: " << e.what() << "\n";
+    if (root) std::cerr << "cgcm: stopped after step " << step << ": " << e.what() << "\n";
   }
-  result.newtonSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+  result.curve = recorder.curve;
+  result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   const auto& t = assembler->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
   result.interactionSeconds = t.interaction - timingsBefore.interaction;
 
-  // Summary: minimum force, jumps, time split (also when the run stopped before the recorded path).
+  // Summary: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
   if (root) {
     std::ofstream sum(dir + "/summary.txt");
-    char buf[256];
-    if (!result.curve.empty()) {
-      const auto minIt = std::min_element(result.curve.begin(), result.curve.end(),
-                                          [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
+    auto both = [&](const char* text) {
+      sum << text;
+      if (printSteps) log << "cgcm: " << text;
+    };
+    char buf[400];
+    both(result.completed ? "completed\n" : ("stopped: " + result.failure + "\n").c_str());
+    const auto& c = result.curve;
+    if (!c.empty()) {
+      const auto minIt =
+          std::min_element(c.begin(), c.end(), [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
       std::snprintf(buf, sizeof buf, "P_min = %.10g at u = %.10g (step %d)\n", minIt->P, minIt->u, minIt->step);
-      sum << buf;
-      if (printSteps) log << "cgcm: " << buf;
+      both(buf);
     }
-    for (const auto& pt : result.curve)
-      if (pt.jump) {
-        std::snprintf(buf, sizeof buf, "jump at step %d: u = %.10g, P = %.10g\n", pt.step, pt.u, pt.P);
-        sum << buf;
-        if (printSteps) log << "cgcm: " << buf;
+    for (const auto& pt : c)
+      if (pt.fold) {
+        const std::string other =
+            plan.parameter == "u" ? "" : ", " + plan.parameter + " = " + std::to_string(pt.parameter);
+        std::snprintf(buf, sizeof buf, "fold at step %d: u = %.10g%s, P = %.10g, gap = %.6g, contact radius = %.6g\n",
+                      pt.step, pt.u, other.c_str(), pt.P, pt.gap, pt.contactRadius);
+        both(buf);
       }
-    int iterations = 0;
-    for (const auto& pt : result.curve) iterations += pt.newtonIterations;
+    if (plan.parameter == "u") {
+      const auto path = plan.arcLength ? displacementControlPath(c) : c;
+      for (const auto& j : jumpsOf(path)) {
+        std::snprintf(buf, sizeof buf, "jump under displacement control at u = %.10g: P %.10g -> %.10g, gap %.6g -> %.6g\n",
+                      j.from.u, j.from.P, j.to.P, j.from.gap, j.to.gap);
+        both(buf);
+      }
+      std::snprintf(buf, sizeof buf, "hysteresis energy (loop of the displacement-controlled path) = %.10g\n",
+                    hysteresisEnergy(path));
+      both(buf);
+    }
+    int iterations = 0, unstable = 0;
+    for (const auto& pt : c) iterations += pt.newtonIterations, unstable += pt.stable ? 0 : 1;
     std::snprintf(buf, sizeof buf,
-                  "steps = %zu (%d accepted at a stall), Newton iterations = %d (%.2f per step); wall time of the "
-                  "load path %.3f s = bulk assembly %.3f s + interaction %.3f s + linear solves and NOX %.3f s\n",
-                  result.curve.size(), result.stalledSteps, iterations,
-                  double(iterations) / std::max<std::size_t>(1, result.curve.size()),
-                  result.newtonSeconds, result.assemblySeconds, result.interactionSeconds,
-                  result.newtonSeconds - result.assemblySeconds - result.interactionSeconds);
-    sum << buf << (result.completed ? "completed\n" : "stopped: " + result.failure + "\n");
-    if (printSteps) log << "cgcm: " << buf << "cgcm: outputs in " << dir << "/\n";
+                  "states = %zu (%d unstable), Newton iterations = %d (%.2f per state), continuation steps = %d, "
+                  "graph restarts = %d\n",
+                  c.size(), unstable, iterations, double(iterations) / std::max<std::size_t>(1, c.size()),
+                  result.continuationSteps, result.graphRestarts);
+    both(buf);
+    std::snprintf(buf, sizeof buf,
+                  "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s + linear solves, NOX "
+                  "and LOCA %.3f s\n",
+                  result.pathSeconds, result.assemblySeconds, result.interactionSeconds,
+                  result.pathSeconds - result.assemblySeconds - result.interactionSeconds);
+    both(buf);
+    if (printSteps) log << "cgcm: outputs in " << dir << "/\n";
   }
   return result;
 }

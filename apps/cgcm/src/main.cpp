@@ -14,7 +14,9 @@ namespace {
 
 void usage(std::ostream& out) {
   out << "usage: cgcm DECK.xml [Path/To/Parameter=value ...]\n"
-         "       cgcm --help     (every parameter with its default and meaning)\n";
+         "       cgcm --help     (every parameter with its default and meaning)\n"
+         "exit codes: 0 the whole path was followed; 1 the solver stopped (the reason is printed, the outputs\n"
+         "            written so far are valid); 2 bad input (nothing was run)\n";
 }
 
 }  // namespace
@@ -46,5 +48,12 @@ int main(int argc, char** argv) {
   } catch (const cgcm::InputError& e) {
     if (root) std::cerr << "cgcm: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {
+    // The solver stops cleanly on its own; anything else still ends with a message, not an abort.
+    if (root) std::cerr << "cgcm: stopped: " << e.what() << "\n";
+    return 1;
+  } catch (...) {
+    if (root) std::cerr << "cgcm: stopped: unknown error\n";
+    return 1;
   }
 }

@@ -244,17 +244,20 @@ void Assembler::evaluate(const Vector& u, Vector& f, Matrix* J) {
   }
   if (globalCounts[0] > 0)
     throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0)");
-  if (globalCounts[1] > 0)
+  if (globalCounts[1] > 0) {
+    graphOutdated_ = true;
     throw GraphOutdatedError(std::to_string(globalCounts[1]) +
                              " interaction tangent entries fell outside the matrix graph");
+  }
 }
 
-void Assembler::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadius) {
-  if (!(searchRadius > interaction->cutoff()))
-    throw InputError("Interaction/Search Radius Factor: the graph search radius (" + std::to_string(searchRadius) +
-                     ") must exceed the interaction cutoff (" + std::to_string(interaction->cutoff()) + ")");
+void Assembler::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction,
+                               Real searchRadiusFactor) {
+  if (!(searchRadiusFactor > 1.0))
+    throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +
+                     ": the graph search radius must exceed the interaction cutoff (factor > 1)");
   interaction_ = std::move(interaction);
-  searchRadius_ = searchRadius;
+  searchRadiusFactor_ = searchRadiusFactor;
   ownsFacet_.assign(interaction_->numBodies(), {});
   const int rank = dofs_->comm()->getRank();
   std::set<LocalIndex> nodes;
@@ -320,14 +323,31 @@ int Assembler::assembleInteraction(const Vector& u, Vector::dual_view_type::t_de
   return dropped;
 }
 
-bool Assembler::updateInteractionGraph(const Vector& u, bool keepExisting, Real radiusFactor) {
-  if (!interaction_) return false;
+Real Assembler::searchRadius() const { return interaction_ ? searchRadiusFactor_ * interaction_->cutoff() : 0.0; }
+
+std::vector<std::pair<LocalIndex, LocalIndex>> Assembler::interactionCouplings(const Vector& u, Real radius) {
   const std::vector<Real>& x = surfaceCoordinates(u);
   const Map& overlap = *dofs_->overlapMap();
   std::vector<std::pair<LocalIndex, LocalIndex>> wanted;
-  for (const auto& rc : interaction_->couplings(x.data(), searchRadius_ * radiusFactor))
+  for (const auto& rc : interaction_->couplings(x.data(), radius))
     if (overlap.getLocalElement(dofs_->dof(rc.first, 0)) != Teuchos::OrdinalTraits<LocalIndex>::invalid())
       wanted.push_back(rc);
+  return wanted;
+}
+
+bool Assembler::interactionGraphCovers(const Vector& u, Real radius) {
+  if (!interaction_) return true;
+  const auto wanted = interactionCouplings(u, radius);
+  const int missing = graph_.is_null() || !std::includes(extraCouplings_.begin(), extraCouplings_.end(),
+                                                         wanted.begin(), wanted.end());
+  int anyMissing = 0;
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, missing, Teuchos::outArg(anyMissing));
+  return anyMissing == 0;
+}
+
+bool Assembler::updateInteractionGraph(const Vector& u, bool keepExisting, Real radiusFactor) {
+  if (!interaction_) return false;
+  auto wanted = interactionCouplings(u, searchRadius() * radiusFactor);
   const int missing = std::includes(extraCouplings_.begin(), extraCouplings_.end(), wanted.begin(), wanted.end())
                           ? 0 : 1;
   int anyMissing = 0;

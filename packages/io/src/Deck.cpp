@@ -1,5 +1,7 @@
 #include "cgcm/io/Deck.hpp"
 
+#include <cstdlib>
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
@@ -64,7 +66,14 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
     const Teuchos::ParameterList* v = &valid;
     Teuchos::ParameterList* d = &deck;
     std::string prefix;
+    bool passThrough = false;  // a sublist handed to a library as it is (LOCA, Stratimikos)
     for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      if (passThrough || (v->isSublist(parts[i]) && v->sublist(parts[i]).numParams() == 0)) {
+        passThrough = true;
+        d = &d->sublist(parts[i]);
+        prefix += parts[i] + "/";
+        continue;
+      }
       if (!v->isSublist(parts[i]))
         throw InputError("override " + path + ": \"" + prefix + parts[i] + "\" is not a parameter group; valid at " +
                          (prefix.empty() ? "top level" : prefix) + ": " + entryNames(*v));
@@ -73,6 +82,25 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
       prefix += parts[i] + "/";
     }
     const std::string& name = parts.back();
+    if (passThrough) {
+      // Typed as the deck has it, or from the text: true/false, an integer, a
+      // number with a point or an exponent (a double), else a string.
+      const bool hasEntry = d->isParameter(name) && !d->isSublist(name);
+      char* end = nullptr;
+      const long asInt = std::strtol(text.c_str(), &end, 10);
+      const bool isInt = !text.empty() && *end == '\0';
+      std::strtod(text.c_str(), &end);
+      const bool isNumber = !text.empty() && *end == '\0';
+      if ((hasEntry && d->getEntry(name).isType<bool>()) || (!hasEntry && (text == "true" || text == "false")))
+        d->set(name, text == "true" || text == "1");
+      else if ((hasEntry && d->getEntry(name).isType<int>()) || (!hasEntry && isInt))
+        d->set(name, int(asInt));
+      else if ((hasEntry && d->getEntry(name).isType<double>()) || (!hasEntry && isNumber))
+        d->set(name, parseDouble(path, text));
+      else
+        d->set(name, text);
+      continue;
+    }
     if (!v->isParameter(name) || v->isSublist(name))
       throw InputError("override " + path + ": unknown parameter \"" + name + "\"; valid in " +
                        (prefix.empty() ? "top level" : prefix) + ": " + entryNames(*v));

@@ -2,6 +2,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,13 +15,16 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Loading"));
   valid->set("Approach Path", Teuchos::Array<double>{0.0, 0.1},
-             "waypoints of the prescribed displacement u (the load parameter); the run starts at the first "
-             "and moves linearly through the others, e.g. {-0.02, 0.06, -0.03}: approach, then retract");
+             "waypoints of the prescribed displacement u; the run starts at the first and moves linearly "
+             "through the others, e.g. {-0.02, 0.06, -0.03}: approach, then retract");
   auto positive = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
   positive->setMin(1e-300);
-  valid->set("Initial Increment", 0.005, "first increment of u", positive);
-  valid->set("Min Increment", 1e-7, "the run stops with an error if a step fails at this increment", positive);
-  valid->set("Max Increment", 0.01, "largest increment of u", positive);
+  valid->set("Initial Increment", 0.005, "first increment of u (arc-length control: the first step's change of "
+             "the continuation parameter)", positive);
+  valid->set("Min Increment", 1e-7, "the run stops with an error if a step fails at this increment "
+             "(arc-length control: the smallest arclength step)", positive);
+  valid->set("Max Increment", 0.01, "largest increment of u (arc-length control: half the largest arclength step)",
+             positive);
   auto iters = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
   iters->setMin(1);
   valid->set("Easy Step Iterations", 4, "the increment grows after a step that needed at most this many "
@@ -30,10 +34,13 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
   valid->set("Growth Factor", 1.5, "increment growth after an easy step (>= 1)", growth);
   auto cut = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.01, 0.99));
   valid->set("Cutback Factor", 0.5, "increment reduction after a failed step (0.01 .. 0.99)", cut);
-  valid->set("Fold Increment", 1e-4,
-             "a step that fails or jumps even below this increment marks a fold of the load path "
-             "(jump-to-contact / jump-off-contact): the state then jumps to the other stable branch",
-             positive);
+  auto cutbacks = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 50));
+  valid->set("Cutbacks Before Continuation", 2,
+             "displacement control: a step that still fails after this many cut-backs hands over to arc-length "
+             "continuation, which goes to the step's u along the path: through a fold (jump-to-contact, "
+             "jump-off-contact) it locates the fold, follows the unstable branch and lands on the far stable "
+             "branch at the same u (the jump); without one it simply arrives (0 .. 50)",
+             cutbacks);
   return valid;
 }
 
@@ -47,62 +54,69 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
   s.easyIterations = p.get<int>("Easy Step Iterations");
   s.growth = p.get<double>("Growth Factor");
   s.cutback = p.get<double>("Cutback Factor");
-  s.foldIncrement = p.get<double>("Fold Increment");
+  s.cutbacksBeforeContinuation = p.get<int>("Cutbacks Before Continuation");
   if (s.path.size() < 2)
-    throw InputError("Loading/Approach Path needs at least two values (start and target), got " +
+    throw InputError("Loading/Approach Path: needs at least two values (start and target), got " +
                      std::to_string(s.path.size()));
+  for (std::size_t i = 0; i < s.path.size(); ++i)
+    if (!std::isfinite(s.path[i]))
+      throw InputError("Loading/Approach Path: waypoint " + std::to_string(i) + " is not a finite number");
   for (std::size_t i = 1; i < s.path.size(); ++i) {
     if (s.path[i] == s.path[i - 1])
-      throw InputError("Loading/Approach Path repeats the value " + std::to_string(s.path[i]) +
-                       " at positions " + std::to_string(i - 1) + " and " + std::to_string(i) +
-                       "; consecutive waypoints must differ");
+      throw InputError("Loading/Approach Path: repeats the value " + std::to_string(s.path[i]) + " at positions " +
+                       std::to_string(i - 1) + " and " + std::to_string(i) + "; consecutive waypoints must differ");
     if (i >= 2 && (s.path[i] - s.path[i - 1]) * (s.path[i - 1] - s.path[i - 2]) > 0)
-      throw InputError("Loading/Approach Path keeps moving the same way through waypoint " +
+      throw InputError("Loading/Approach Path: keeps moving the same way through waypoint " +
                        std::to_string(s.path[i - 1]) + "; list only the turning points (e.g. {-0.02, 0.06, -0.03})");
   }
-  if (s.minIncrement > s.foldIncrement)
-    throw InputError("Loading: need Min Increment <= Fold Increment, got " + std::to_string(s.minIncrement) +
-                     " and " + std::to_string(s.foldIncrement));
   if (s.minIncrement > s.initialIncrement || s.initialIncrement > s.maxIncrement)
-    throw InputError("Loading: need Min Increment <= Initial Increment <= Max Increment, got " +
+    throw InputError("Loading/Initial Increment: need Min Increment <= Initial Increment <= Max Increment, got " +
                      std::to_string(s.minIncrement) + ", " + std::to_string(s.initialIncrement) + ", " +
                      std::to_string(s.maxIncrement));
   return s;
 }
 
-bool LoadStepper::jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrevious, Vector& trial,
-                                    StepInfo& info) {
+bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, StepInfo& info, int& step,
+                                  const Observer& observer) {
+  const auto [lo, hi] = std::minmax_element(settings_.path.begin(), settings_.path.end());
+  const Real range = 2.0 * (*hi - *lo) + std::abs(pNew - p);
+  ContinuationSegment segment;
+  segment.parameter = 0;
+  segment.target = pNew;
+  segment.direction = pNew > p ? 1.0 : -1.0;
+  segment.bound = p - segment.direction * range;
+  segment.initialStep = std::abs(pNew - p);
+  segment.stableStart = true;
   model_->setLoad(p);
-  int iterations = 0;
-  auto relax = [&](Real push, const Vector* direction, Real largest) {
-    trial.assign(u);
-    if (push > 0.0) trial.update(push / largest, *direction, 1.0);
-    model_->dirichlet().impose(p, trial);
-    // a pushed state past the fold lands within a few dozen pseudo steps
-    // (at gammaW = 20, 44 pseudo steps and Newton iterations together); the
-    // unpushed one, the last resort, gets the default
-    info.newton = newton_.solvePseudoTransient(trial, jumpStepLimit_, 1e-2, push > 0.0 ? 100 : 300);
-    iterations += info.newton.iterations;
-    info.newton.iterations = iterations;
-    // a relaxation that only stalls has not found an equilibrium
-    if (info.newton.converged && info.newton.stalled)
-      info.newton.failure = "the relaxation ended in a Newton cycle, not at an equilibrium";
-    if (!info.newton.converged || info.newton.stalled) return false;
-    info.jump = !continuous_ || !continuous_(u, trial);
-    return true;
-  };
-  // Right at a fold the residual is tiny and a relaxation from u hardly
-  // moves. Near the fold the secant of the last two states is the mode that
-  // loses stability, so the state is pushed along it first, by growing amounts.
-  if (uPrevious != nullptr && jumpStepLimit_ < 1e300) {
-    Vector direction(u.getMap());
-    direction.update(1.0, u, -1.0, *uPrevious, 0.0);
-    const Real largest = direction.normInf();
-    if (largest > 0.0)
-      for (Real push : {1.0, 4.0})
-        if (relax(push * jumpStepLimit_, &direction, largest)) return true;  // on either branch
+  bool first = true;
+  const auto result = continuation_->run(u, segment, [&](const PathPoint& pt) {
+    // Under displacement control only the fold where the branch ends is a
+    // physical state; the rest of the continuation (unstable branches, further
+    // folds on the way) is the path of the jump.
+    if (!pt.fold || !first) return;
+    first = false;
+    StepInfo fold;
+    fold.step = ++step;
+    fold.load = pt.p[0];
+    fold.fold = true;
+    fold.newton.converged = true;
+    fold.newton.iterations = pt.iterations;
+    fold.newton.residualNorms = {pt.residual};
+    observer(fold, *pt.x);
+  });
+  jumps_.push_back(result);
+  model_->setLoad(pNew);
+  if (!result.reached) {
+    info.newton.failure = "continuation from u = " + std::to_string(p) + ": " + result.failure;
+    return false;
   }
-  return relax(0.0, nullptr, 1.0);
+  trial.assign(*result.last.x);
+  info.jump = !result.folds.empty();
+  info.newton.converged = true;
+  info.newton.iterations = result.newtonIterations;
+  info.newton.residualNorms = {result.last.residual};
+  info.newton.failure.clear();
+  return true;
 }
 
 void LoadStepper::run(Vector& u, const Observer& observer) {
@@ -124,18 +138,17 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
                    1.0);
     model_->dirichlet().impose(p, trial);
     info.newton = newton_.solve(trial);
-    if (!info.newton.converged && havePrevious &&
-        info.newton.failure.find("inverted") != std::string::npos) {  // the predictor overshot: retry from u
+    if (!info.newton.converged && havePrevious) {  // the predictor may have overshot: retry from u
       trial.assign(u);
       model_->dirichlet().impose(p, trial);
       const auto first = info.newton;
       info.newton = newton_.solve(trial);
       info.newton.iterations += first.iterations;
+      if (!info.newton.converged) info.newton.failure = first.failure;
     }
     return info.newton.converged;
   };
 
-  // Initial state.
   {
     StepInfo info;
     info.load = path[0];
@@ -153,7 +166,6 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
     const Real dir = target > p ? 1.0 : -1.0;
     while (dir * (target - p) > 1e-14 * (1.0 + std::abs(target))) {
       StepInfo info;
-      info.step = step + 1;
       for (;;) {
         const Real dp = std::min(increment, dir * (target - p));
         // Land exactly on the waypoint when the remainder is a small fraction of a step.
@@ -163,23 +175,25 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
         if (converged && (!continuous_ || continuous_(u, trial))) break;
         if (converged) info.newton.failure = "the state left its branch";
         ++info.cutbacks;
-        if (increment <= settings_.foldIncrement) {
-          // The branch ends here: the state must settle on the other stable branch.
-          // the secant is the direction of motion only if the last step went the same way
-          const bool secant = havePrevious && (pNew - p) * (p - pPrevious) > 0.0;
-          if (jumpToOtherBranch(pNew, u, secant ? &uPrevious : nullptr, trial, info)) {
+        const bool exhausted = increment * settings_.cutback < settings_.minIncrement;
+        if (continuation_ != nullptr && (info.cutbacks > settings_.cutbacksBeforeContinuation || exhausted)) {
+          if (continueThrough(p, pNew, u, trial, info, step, observer)) {
             increment = settings_.initialIncrement;
             break;
           }
-        }
-        increment *= settings_.cutback;
-        if (increment < settings_.minIncrement) {
           std::ostringstream msg;
-          msg << "load step from u = " << p << " failed below Loading/Min Increment = " << settings_.minIncrement
-              << " (" << info.newton.failure << ")";
+          msg << "step " << step + 1 << " from u = " << p << " to " << pNew << " failed: " << info.newton.failure;
           model_->setLoad(p);
           throw NumericalError(msg.str());
         }
+        if (exhausted) {
+          std::ostringstream msg;
+          msg << "step " << step + 1 << " from u = " << p << " failed below Loading/Min Increment = "
+              << settings_.minIncrement << " (" << info.newton.failure << ")";
+          model_->setLoad(p);
+          throw NumericalError(msg.str());
+        }
+        increment *= settings_.cutback;
       }
       uPrevious.assign(u);
       pPrevious = p;
@@ -187,7 +201,7 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
       p = info.load;
       pCurrent = p;
       u.assign(trial);
-      ++step;
+      info.step = ++step;
       observer(info, u);
       if (info.cutbacks == 0 && info.newton.iterations <= settings_.easyIterations)
         increment = std::min(settings_.maxIncrement, increment * settings_.growth);

@@ -36,7 +36,8 @@ struct InteractionSetup {
   std::shared_ptr<const interaction::PairPotential> potential;
   std::vector<Real> densities;  ///< reference density per body
   interaction::SurfaceInteractionOptions options;
-  Real searchRadius = 0.0;      ///< graph search radius (> cutoff)
+  Real searchRadiusFactor = 2.0;  ///< graph search radius / cutoff (> 1)
+  Real gammaL = 0.0, gammaW = 0.0;  ///< the deck's scaling parameters (THEORY section 4)
 };
 
 /// Two-body contact responses: the gap on the axis between the apex nodes,
@@ -62,7 +63,10 @@ struct ProblemSetup {
   std::optional<InteractionSetup> interaction;
   std::optional<ContactGeometry> contact;
   std::vector<std::string> report;  ///< scales and derived parameters, printed at the start of a run
-  Real forceScale = 0.0;            ///< 2 pi w R of the Lennard-Jones interaction (0: no interaction)
+  /// Force scale F_ref of the convergence test: the paper's force unit
+  /// E0/R0 = Y R0^2 for contact (Y R0 per unit thickness in plane strain), Y
+  /// times the loaded area for a block.
+  Real forceScale = 1.0;
 };
 
 /// Every parameter a deck may hold, with defaults and documentation.
@@ -75,7 +79,8 @@ ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 assembly::Formulation parseFormulation(const std::string& name);
 
 /// The discrete problem of a set-up: dof distribution, assembler (with the
-/// interaction when there is one), Dirichlet conditions and ModelEvaluator.
+/// interaction when there is one), Dirichlet conditions and ModelEvaluator,
+/// whose p(0) is (u, gammaW, gammaL) with an interaction and (u) without.
 struct Discretization {
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Assembler> assembler;

@@ -1,37 +1,48 @@
 #pragma once
-// One run of the solver app: set up from a validated deck, step the load
-// path, write the load curve and a summary.
+// One run of the solver app: set up from a validated deck, follow the path
+// (displacement control or arc-length continuation), write the load curve
+// and a summary.
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "cgcm/core/Types.hpp"
 
 namespace cgcm::app {
 
+/// One row of the load curve: a converged state.
 struct LoadPoint {
-  int step;
-  Real u, P;
-  Real gap, contactRadius;  ///< two-body contact only
-  int newtonIterations;
-  bool jump;                ///< reached by a jump to another branch
-  Real residual;
+  int step = 0;
+  Real u = 0.0, P = 0.0;
+  Real parameter = 0.0;                   ///< value of the continuation parameter (u, gammaW or gammaL)
+  Real gap = 0.0, contactRadius = 0.0;    ///< two-body contact only
+  Real Plower = 0.0;                      ///< the same resultant at the lower body's support
+  int newtonIterations = 0;
+  bool stable = true;                     ///< under control of the continuation parameter
+  bool fold = false;                      ///< a located fold (turning point of the path)
+  bool jump = false;                      ///< reached by a jump from a fold (displacement control)
+  Real residual = 0.0;                    ///< |f|_2 of the accepted state (force units)
+  int cutbacks = 0;
 };
 
 struct RunResult {
   std::vector<LoadPoint> curve;
-  bool completed = false;        ///< the whole load path was traversed
-  std::string failure;           ///< why not
-  double assemblySeconds = 0.0;  ///< bulk residual + tangent evaluations
+  bool completed = false;           ///< the whole path was traversed
+  std::string failure;              ///< why not
+  double assemblySeconds = 0.0;     ///< bulk residual + tangent evaluations
   double interactionSeconds = 0.0;  ///< interaction: search, kernel, scatter
-  double newtonSeconds = 0.0;    ///< the whole load path, failed attempts included
-  int stalledSteps = 0;          ///< steps accepted at a Newton stall (see Solver/Newton/Stall Tolerance)
+  double pathSeconds = 0.0;         ///< the whole path, failed attempts included
+  int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
+  int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
 };
 
 /// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,
-/// parameters.xml}; prints progress on rank 0 to `log`. Collective.
+/// summary.txt, parameters.xml}; prints progress on rank 0 to `log`. Throws
+/// InputError for inconsistent input before any work; a run the solver stops
+/// returns completed = false with the reason. Collective.
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
                         std::ostream& log);
 

@@ -65,15 +65,25 @@ class Assembler {
   void evaluate(const Vector& u, Vector& f, Matrix* J);
 
   /// Adds the surface interaction (Method 3) to every evaluation. The matrix
-  /// graph holds the couplings of all surface elements within `searchRadius`
-  /// (> the interaction cutoff) of each other, refreshed by updateInteractionGraph.
-  void setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadius);
+  /// graph holds the couplings of all surface elements within the search
+  /// radius, `searchRadiusFactor` (> 1) times the interaction's current cutoff,
+  /// of each other, refreshed by updateInteractionGraph.
+  void setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor);
   const interaction::SurfaceInteraction* interaction() const { return interaction_.get(); }
+  /// The graph's search radius now (it follows the cutoff).
+  Real searchRadius() const;
   /// Refreshes the interaction couplings from the state u: if some are missing
   /// from the graph, the graph is rebuilt (with the old couplings kept when
   /// `keepExisting`) and true is returned on every rank. `radiusFactor` scales
   /// the search radius. Collective.
   bool updateInteractionGraph(const Vector& u, bool keepExisting = false, Real radiusFactor = 1.0);
+  /// True if the graph holds every coupling of surface elements within
+  /// `radius` of each other at the state u (true without interaction). Collective.
+  bool interactionGraphCovers(const Vector& u, Real radius);
+  /// True if an evaluation since the last clearGraphOutdated() met interaction
+  /// tangent entries outside the graph (it then threw GraphOutdatedError).
+  bool graphOutdated() const { return graphOutdated_; }
+  void clearGraphOutdated() { graphOutdated_ = false; }
   /// Current coordinates (X + u) of every surface node of every body, as a
   /// mesh-wide array (dim entries per node; other nodes hold X). Collective.
   const std::vector<Real>& surfaceCoordinates(const Vector& u);
@@ -112,8 +122,12 @@ class Assembler {
   int graphVersion_ = 0;  ///< incremented on every rebuild: cached column ids follow it
   int colLidsVersion_ = -1;
 
+  /// The couplings (row node, column node) of the interaction at u within radius, rows on this rank.
+  std::vector<std::pair<LocalIndex, LocalIndex>> interactionCouplings(const Vector& u, Real radius);
+
   std::shared_ptr<interaction::SurfaceInteraction> interaction_;
-  Real searchRadius_ = 0.0;
+  Real searchRadiusFactor_ = 0.0;
+  bool graphOutdated_ = false;
   std::vector<std::vector<char>> ownsFacet_;  ///< [body][facet]: this rank evaluates it
   Teuchos::RCP<const Map> surfaceMap_;        ///< every surface dof, on every rank
   Teuchos::RCP<const Import> surfaceImport_;

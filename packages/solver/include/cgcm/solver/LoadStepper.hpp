@@ -1,42 +1,46 @@
 #pragma once
-// Displacement-controlled load stepping along a piecewise-linear path of the
-// load parameter p, with adaptive increments: a step that fails (no Newton
-// convergence, inverted element) is cut back and redone from the last
-// converged state; it is never accepted.
+// Displacement control along a piecewise-linear path of the load u, with
+// adaptive increments. A step that fails (no convergence, an evaluation
+// error, a state that left its branch) is cut back and redone from the last
+// converged state; it is never accepted. A step that still fails after a few
+// cut-backs hands over to arc-length continuation from the last state: if the
+// displacement-controlled branch ends at a fold, the continuation locates the
+// fold, follows the unstable branch and lands on the far stable branch at the
+// same u, which is the physical jump.
 #include <Teuchos_ParameterList.hpp>
 
 #include <functional>
 #include <vector>
 
+#include "cgcm/solver/Continuation.hpp"
 #include "cgcm/solver/NewtonSolver.hpp"
 
 namespace cgcm::solver {
 
 struct LoadPathSettings {
-  std::vector<Real> path{0.0, 1.0};   ///< waypoints of p; the run starts at path[0]
-  Real initialIncrement = 0.01;
-  Real minIncrement = 1e-8;
-  Real maxIncrement = 0.05;
+  std::vector<Real> path{0.0, 1.0};   ///< waypoints of u; the run starts at path[0]
+  Real initialIncrement = 0.005;
+  Real minIncrement = 1e-7;
+  Real maxIncrement = 0.01;
   int easyIterations = 4;             ///< grow the increment after steps this easy
   Real growth = 1.5;
   Real cutback = 0.5;
-  /// Steps that still fail (or jump) below this increment mean the
-  /// displacement-controlled branch has ended at a fold: the state jumps to
-  /// the other stable branch (pseudo-transient solve) and the step is marked.
-  Real foldIncrement = 1e-4;
+  /// A step that still fails after this many cut-backs hands over to continuation.
+  int cutbacksBeforeContinuation = 2;
 
-  /// Valid parameters of the "Loading" sublist.
+  /// Valid parameters of the displacement-control part of the "Loading" sublist.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
   /// Reads and checks a validated "Loading" sublist (increments consistent, path of >= 2 distinct points).
   static LoadPathSettings fromParameters(const Teuchos::ParameterList& p);
 };
 
 struct StepInfo {
-  int step = 0;       ///< accepted steps so far (0 = initial state)
+  int step = 0;         ///< accepted states so far (0 = initial state)
   Real load = 0.0;
   NewtonResult newton;
-  int cutbacks = 0;   ///< failed attempts before this step converged
-  bool jump = false;  ///< the state jumped to another branch (fold of the load path)
+  int cutbacks = 0;     ///< failed attempts before this step converged
+  bool jump = false;    ///< reached by a jump from a fold to another stable branch
+  bool fold = false;    ///< a fold of the load path (located by continuation), where a jump starts
 };
 
 class LoadStepper {
@@ -46,32 +50,35 @@ class LoadStepper {
   /// (true) or jumped to another one (false). Default: always continuous.
   using ContinuityCheck = std::function<bool(const Vector& before, const Vector& after)>;
 
-  LoadStepper(Teuchos::RCP<ModelEvaluator> model, NewtonSolver& newton, const LoadPathSettings& settings)
-      : model_(std::move(model)), newton_(newton), settings_(settings) {}
+  /// `continuation` (may be null: no jumps) carries the path through folds.
+  LoadStepper(Teuchos::RCP<ModelEvaluator> model, NewtonSolver& newton, const LoadPathSettings& settings,
+              Continuation* continuation = nullptr)
+      : model_(std::move(model)), newton_(newton), settings_(settings), continuation_(continuation) {}
 
   /// Runs the whole path from u (initial guess at path[0]); calls `observer`
-  /// after every accepted step. Throws NumericalError if a step fails below the
-  /// minimum increment (everything observed so far stays valid).
+  /// after every accepted state. Throws NumericalError, naming the step, u and
+  /// the reason, if a step fails below the minimum increment or the jump
+  /// fails (everything observed so far stays valid).
   void run(Vector& u, const Observer& observer);
 
   void setContinuityCheck(ContinuityCheck check) { continuous_ = std::move(check); }
 
-  /// Length scale of a jump: the largest move of a dof per pseudo-time step
-  /// in a pseudo-transient relaxation and the first push along the branch's
-  /// secant (unset: no pushes, the relaxation starts from the last state).
-  void setJumpStepLimit(Real maxMove) { jumpStepLimit_ = maxMove; }
+  /// Continuation runs (jumps) so far and their cost.
+  const std::vector<ContinuationResult>& jumps() const { return jumps_; }
 
  private:
-  /// At a fold at load p: finds an equilibrium on another branch from the
-  /// last state u (uPrevious: the state before it, or null). Fills trial and
-  /// info; false if none was found.
-  bool jumpToOtherBranch(Real p, const Vector& u, const Vector* uPrevious, Vector& trial, StepInfo& info);
+  /// From the converged state u at p towards pNew: continuation until u
+  /// reaches pNew again moving the same way. Fills trial and info, reports
+  /// folds to the observer. False if the continuation failed.
+  bool continueThrough(Real p, Real pNew, Vector& u, Vector& trial, StepInfo& info, int& step,
+                       const Observer& observer);
 
   ContinuityCheck continuous_;
-  Real jumpStepLimit_ = 1e300;
   Teuchos::RCP<ModelEvaluator> model_;
   NewtonSolver& newton_;
   LoadPathSettings settings_;
+  Continuation* continuation_;
+  std::vector<ContinuationResult> jumps_;
 };
 
 }  // namespace cgcm::solver

@@ -1,40 +1,67 @@
 #pragma once
 // The discrete problem as a Thyra ModelEvaluator: state x = nodal
-// displacements (owned dofs), parameter p(0) = the load parameter (the
-// prescribed displacement, named "Applied Displacement"), residual
-// f(x, p) = f_int(x) + f_C(x) with Dirichlet rows x_i - (offset_i + scale_i p),
-// and W = df/dx on the assembled Tpetra matrix. NOX and LOCA drive it.
-#include <Thyra_StateFuncModelEvaluatorBase.hpp>
-
+// displacements (owned dofs), parameter vector p(0) = the named scalar
+// parameters (first the load u, the prescribed displacement; then any others
+// the problem exposes, e.g. gammaW), residual f(x, p) = f_int(x) + f_C(x; p)
+// with Dirichlet rows x_i - (offset_i + scale_i u), and W = df/dx on the
+// assembled Tpetra matrix. NOX (Newton) and LOCA (continuation) drive it.
+//
+// A failed evaluation (an inverted cell, touching surfaces, a non-finite
+// value, interaction entries outside the matrix graph) throws a
+// cgcm::NumericalError: NOX, run with "Catch Throws During Solve", turns it
+// into a failed solve, and the caller cuts the step back.
+#include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cgcm/assembly/Assembler.hpp"
 #include "cgcm/assembly/Dirichlet.hpp"
+#include "cgcm/solver/ParameterizedModel.hpp"
 
 namespace cgcm::solver {
 
 using assembly::Matrix;
-using assembly::Vector;
 
-class ModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<Real> {
+/// A scalar parameter of the residual besides the load u: its name, its
+/// nominal value and how a value reaches the physics (e.g. the interaction
+/// strength for gammaW). `apply` must make the residual a smooth function of
+/// the value.
+struct ScalarParameter {
+  std::string name;
+  Real nominal = 0.0;
+  std::function<void(Real)> apply;
+};
+
+class ModelEvaluator : public ParameterizedModel {
  public:
-  static constexpr const char* kLoadParameterName = "Applied Displacement";
+  /// Name of p(0)[0], the prescribed displacement.
+  static constexpr const char* kLoadParameterName = "u";
 
   ModelEvaluator(std::shared_ptr<assembly::Assembler> assembler,
                  std::shared_ptr<assembly::DirichletConditions> dirichlet,
-                 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver);
+                 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver,
+                 std::vector<ScalarParameter> parameters = {});
 
-  /// Load parameter used when the caller passes no p(0) (NOX Newton); LOCA passes its own.
-  void setLoad(Real p);
-  Real load() const { return load_; }
+  /// Names of the entries of p(0): "u" first, then the extra parameters.
+  const Teuchos::Array<std::string>& parameterNames() const override { return *pNames_; }
+  /// The parameter values used when the caller passes no p(0) (NOX Newton);
+  /// LOCA passes its own.
+  void setParameter(int index, Real value) override;
+  Real parameter(int index) const;
+  std::vector<Real> parameters() const override;
+
+  /// The interaction couplings within the middle of the cutoff and the search radius.
+  bool graphCovers(const Vector& x) override;
+  void growGraph(const Vector& x, bool widen) override { assembler_->updateInteractionGraph(x, true, widen ? 2.0 : 1.0); }
+  bool graphOutdated() const override { return assembler_->graphOutdated(); }
+  void clearGraphOutdated() override { assembler_->clearGraphOutdated(); }
+  void setLoad(Real u) { setParameter(0, u); }
+  Real load() const { return parameter(0); }
 
   /// Residual before boundary conditions (the internal force, whose
-  /// constrained entries are the reactions), at (u, p). Collective.
-  void evaluateUnconstrained(const Vector& u, Vector& f);
-
-  /// True if the last residual-only evaluation met an inverted element; that
-  /// residual was then filled with a large value so line searches back off.
-  bool lastEvaluationInverted() const { return lastInverted_; }
+  /// constrained entries are the reactions) at (x, p). Collective.
+  void evaluateUnconstrained(const Vector& x, const std::vector<Real>& p, Vector& f);
 
   assembly::Assembler& assembler() { return *assembler_; }
   const assembly::DirichletConditions& dirichlet() const { return *dirichlet_; }
@@ -52,21 +79,28 @@ class ModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<Real> {
     return linearSolver_;
   }
 
- private:
-  Thyra::ModelEvaluatorBase::OutArgs<Real> createOutArgsImpl() const override;
+ protected:
   void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<Real>& in,
                      const Thyra::ModelEvaluatorBase::OutArgs<Real>& out) const override;
+
+ private:
+  Thyra::ModelEvaluatorBase::OutArgs<Real> createOutArgsImpl() const override;
+  /// The parameter values of `in` (or the nominal ones), applied to the physics.
+  std::vector<Real> applyParameters(const Thyra::ModelEvaluatorBase::InArgs<Real>& in) const;
+  void applyParameters(const std::vector<Real>& p) const;
+  /// f(x, p) with boundary conditions (residual only).
+  void residual(const Vector& x, const std::vector<Real>& p, Vector& f) const;
 
   std::shared_ptr<assembly::Assembler> assembler_;
   std::shared_ptr<assembly::DirichletConditions> dirichlet_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver_;
+  std::vector<ScalarParameter> extra_;
+  mutable std::vector<Real> applied_;  ///< values of the extra parameters the physics holds now
   Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> xSpace_, pSpace_;
   Teuchos::RCP<const assembly::Map> pMap_;
   Teuchos::RCP<const Teuchos::Array<std::string>> pNames_;
   Thyra::ModelEvaluatorBase::InArgs<Real> nominal_;
   Teuchos::RCP<Thyra::VectorBase<Real>> pNominal_;  ///< the p(0) held by nominal_
-  Real load_ = 0.0;
-  mutable bool lastInverted_ = false;
 };
 
 }  // namespace cgcm::solver

@@ -1,0 +1,107 @@
+#pragma once
+// Pseudo-arclength continuation with LOCA (a LOCA::Stepper on a
+// LOCA::Thyra::Group over the ModelEvaluator) in one entry of p(0): the load
+// u, or any other parameter the model exposes (e.g. gammaW).
+//
+// On top of LOCA's stepper:
+// - folds: the parameter component dp/ds of LOCA's unit tangent changes
+//   sign across a fold; the fold is then located to solver tolerance as the
+//   root of dp/ds along the arc-length step (Boost.Math TOMS 748), each trial
+//   being an arc-length corrector solve;
+// - stability under control of the continuation parameter: the determinant
+//   of the Jacobian has the sign of dp/ds times that of the (regular)
+//   bordered matrix, so it changes sign exactly at folds; a path that starts
+//   stable is unstable after an odd number of folds;
+// - the matrix graph: when the interaction couplings of a converged point are
+//   no longer covered by the graph (or an evaluation met missing entries), the
+//   stepper stops, the graph is rebuilt and a new stepper continues from the
+//   last converged point in the same direction.
+#include <Teuchos_ParameterList.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cgcm/solver/NewtonSolver.hpp"
+#include "cgcm/solver/ParameterizedModel.hpp"
+
+namespace cgcm::solver {
+
+/// A converged point of a path.
+struct PathPoint {
+  Teuchos::RCP<Vector> x;     ///< state
+  std::vector<Real> p;        ///< all entries of p(0)
+  Real dpds = 0.0;            ///< parameter component of the unit tangent (LOCA's scaled arclength)
+  bool stable = true;         ///< under control of the continuation parameter
+  bool fold = false;          ///< a located fold (dp/ds = 0 to solver tolerance)
+  int iterations = 0;         ///< Newton iterations of its corrector
+  Real residual = 0.0;        ///< |f|_2 at the point (force units)
+};
+
+/// One continuation run: from a converged point, in one parameter, until the
+/// parameter reaches `target` while moving away from the start in `direction`
+/// (after any number of folds), or fails.
+struct ContinuationSegment {
+  int parameter = 0;        ///< index in p(0)
+  Real target = 0.0;
+  Real direction = 1.0;     ///< +1 or -1: the way the parameter moves first (towards target)
+  Real bound = 0.0;         ///< the other side: the run stops as failed if the parameter gets beyond it
+  Real initialStep = 1e-3;  ///< size of the first parameter increment (> 0)
+  bool stableStart = true;  ///< stability of the start point
+};
+
+struct ContinuationResult {
+  bool reached = false;           ///< the parameter reached the target
+  std::string failure;            ///< why not
+  int steps = 0;                  ///< converged continuation steps (fold trials excluded)
+  int failedSteps = 0;            ///< corrector failures (cut back by LOCA)
+  int restarts = 0;               ///< stepper restarts after graph rebuilds
+  int newtonIterations = 0;       ///< all corrector iterations, fold location included
+  std::vector<PathPoint> folds;   ///< the folds located on the way
+  PathPoint last;                 ///< the last converged point
+};
+
+/// Continuation settings: the LOCA parameter list (sublists "Stepper",
+/// "Predictor", "Step Size", "Bifurcation", ... as LOCA documents them) with
+/// cgcm's defaults filled in. cgcm sets "Stepper/Continuation Parameter",
+/// "Initial Value", "Max Value", "Min Value" and "Step Size/Initial Step Size"
+/// for every run itself.
+class Continuation {
+ public:
+  using Observer = std::function<void(const PathPoint&)>;
+
+  /// `loca`: the deck's LOCA sublist (may be empty). Throws InputError for
+  /// entries cgcm sets itself. `print`: LOCA's own step output.
+  Continuation(Teuchos::RCP<ParameterizedModel> model, const NewtonSettings& newton, const Teuchos::ParameterList& loca,
+               bool print = false);
+  ~Continuation();
+
+  /// cgcm's default LOCA list (documented in the user guide).
+  static Teuchos::RCP<Teuchos::ParameterList> defaultLocaParameters();
+
+  /// Builds (without solving) a stepper on the model at x with the complete
+  /// parameter list, then reports every entry of the user's Stepper,
+  /// Predictor and Step Size sublists that LOCA did not read: a misspelt or
+  /// unknown name. Throws InputError naming them. Collective.
+  void validate(const Vector& x);
+
+  /// Runs one segment from the converged point (x0, the model's current
+  /// parameters). `observer` sees every new converged point in path order,
+  /// located folds included (the start point is not repeated). Collective.
+  ContinuationResult run(const Vector& x0, const ContinuationSegment& segment, const Observer& observer);
+
+  /// The full parameter list of the last run (LOCA's defaults filled in).
+  const Teuchos::ParameterList& lastParameters() const { return *lastParams_; }
+
+ private:
+  friend class PathStepper;
+  struct RunState;
+
+  Teuchos::RCP<ParameterizedModel> model_;
+  NewtonSettings newton_;
+  Teuchos::RCP<Teuchos::ParameterList> loca_;  ///< the user's list over cgcm's defaults
+  Teuchos::RCP<Teuchos::ParameterList> lastParams_;
+  bool print_;
+};
+
+}  // namespace cgcm::solver

@@ -1,0 +1,46 @@
+#pragma once
+// The convergence test every accepted state passes, for Newton at a fixed
+// load and for the corrector of arc-length continuation alike: the unscaled
+// 2-norm of the residual f (force units: the internal force plus the
+// interaction force; constrained rows hold u_i - u_prescribed, which Newton
+// zeroes in one step) at or below an absolute force tolerance.
+#include <NOX_StatusTest_Generic.H>
+#include <Teuchos_RCP.hpp>
+
+#include "cgcm/core/Types.hpp"
+
+namespace NOX::Abstract {
+class Group;
+}
+
+namespace cgcm::solver {
+
+/// The unscaled 2-norm of the residual of a NOX group (its F must be
+/// current). For a LOCA continuation group, the norm of the physical part of
+/// its extended residual.
+Real residualNorm(const NOX::Abstract::Group& group);
+
+/// NOX status test: converged when residualNorm <= tolerance and, for a
+/// continuation group, the continuation constraints hold to round-off
+/// (|g| <= constraintTolerance, in the constraint's own units).
+class ResidualNormTest : public NOX::StatusTest::Generic {
+ public:
+  explicit ResidualNormTest(Real tolerance, Real constraintTolerance = 1e-10)
+      : tolerance_(tolerance), constraintTolerance_(constraintTolerance) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType type) override;
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent = 0) const override;
+  Real lastNorm() const { return norm_; }
+
+ private:
+  Real tolerance_, constraintTolerance_;
+  Real norm_ = -1.0;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+/// The complete test of a nonlinear solve: failed on a non-finite residual or
+/// after `maxIterations`, converged on ResidualNormTest(tolerance).
+Teuchos::RCP<NOX::StatusTest::Generic> convergenceTests(Real tolerance, int maxIterations);
+
+}  // namespace cgcm::solver

@@ -1,0 +1,35 @@
+#pragma once
+// What continuation needs of a model besides Thyra's ModelEvaluator: named
+// scalar parameters in p(0), and hooks for a matrix graph that may have to
+// grow along a path (interaction couplings appear as bodies approach).
+#include <Thyra_StateFuncModelEvaluatorBase.hpp>
+
+#include <string>
+#include <vector>
+
+#include "cgcm/assembly/TpetraTypes.hpp"
+
+namespace cgcm::solver {
+
+using assembly::Vector;
+
+class ParameterizedModel : public Thyra::StateFuncModelEvaluatorBase<Real> {
+ public:
+  /// Names of the entries of p(0), in order.
+  virtual const Teuchos::Array<std::string>& parameterNames() const = 0;
+  /// The values used when a caller passes no p(0); continuation passes its own.
+  virtual std::vector<Real> parameters() const = 0;
+  virtual void setParameter(int index, Real value) = 0;
+  /// Index of a parameter in p(0); throws InputError listing the names.
+  int parameterIndex(const std::string& name) const;
+
+  /// True if the Jacobian's graph holds every coupling the state x needs, with a margin.
+  virtual bool graphCovers(const Vector& x) { return true; }
+  /// Grows the graph to cover x (`widen`: with a larger search radius than usual).
+  virtual void growGraph(const Vector& x, bool widen) {}
+  /// True if an evaluation since clearGraphOutdated() met entries outside the graph.
+  virtual bool graphOutdated() const { return false; }
+  virtual void clearGraphOutdated() {}
+};
+
+}  // namespace cgcm::solver

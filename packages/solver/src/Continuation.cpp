@@ -1,0 +1,447 @@
+#include "cgcm/solver/Continuation.hpp"
+
+#include <LOCA.H>
+#include <LOCA_MultiContinuation_AbstractStrategy.H>
+#include <LOCA_MultiContinuation_ExtendedMultiVector.H>
+#include <LOCA_MultiContinuation_ExtendedVector.H>
+#include <LOCA_Parameter_SublistParser.H>
+#include <LOCA_Thyra.H>
+#include <NOX_Solver_Factory.H>
+#include <NOX_Thyra.H>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+
+#include <Teuchos_oblackholestream.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/solver/Convergence.hpp"
+
+namespace cgcm::solver {
+
+namespace {
+
+using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
+using Iterator = LOCA::Abstract::Iterator;
+
+Teuchos::RCP<Vector> tpetraCopy(const NOX::Abstract::Vector& x) {
+  const auto& tx = dynamic_cast<const NOX::Thyra::Vector&>(x);
+  return Teuchos::rcp(new Vector(*Extract::getConstTpetraVector(tx.getThyraRCPVector()), Teuchos::Copy));
+}
+
+NOX::Thyra::Vector thyraCopy(const Vector& x) {
+  auto copy = Teuchos::rcp(new Vector(x, Teuchos::Copy));
+  return NOX::Thyra::Vector(
+      Thyra::createVector(Teuchos::rcp_implicit_cast<Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(copy)));
+}
+
+// The names cgcm sets for every run.
+const char* const kOwnedStepperKeys[] = {"Continuation Parameter", "Initial Value", "Max Value", "Min Value"};
+// Names LOCA reads only late in a run (at its last step), so a dry start does not mark them.
+const char* const kLateStepperKeys[] = {"Hit Continuation Bound", "Relative Stopping Threshold",
+                                        "Compute Eigenvalues On Target Step"};
+
+}  // namespace
+
+struct Continuation::RunState {
+  const ContinuationSegment* segment = nullptr;
+  const Observer* observer = nullptr;
+  ContinuationResult* result = nullptr;
+  bool stable = true;         ///< stability of the last converged point
+  bool restart = false;       ///< the graph must be rebuilt
+  bool widen = false;         ///< ... wider than the search radius (an evaluation met missing entries)
+  Real lastDpds = 0.0;        ///< dp/ds at the last converged point
+  Real lastStepSize = 0.0;    ///< arclength of the last step (signed)
+  bool haveLast = false;
+};
+
+// LOCA's stepper with cgcm's bookkeeping: every converged point goes to the
+// observer with its tangent, stability and folds; graph coverage is checked.
+class PathStepper : public LOCA::Stepper {
+ public:
+  PathStepper(const Teuchos::RCP<LOCA::GlobalData>& data,
+              const Teuchos::RCP<LOCA::MultiContinuation::AbstractGroup>& group,
+              const Teuchos::RCP<NOX::StatusTest::Generic>& tests, const Teuchos::RCP<Teuchos::ParameterList>& params,
+              Continuation& owner, Continuation::RunState& state)
+      : LOCA::Stepper(data, group, tests, params), owner_(owner), state_(state) {}
+
+  /// Only the initial solve and the first tangent (to see which parameters LOCA reads).
+  Iterator::IteratorStatus dryStart() { return start(); }
+
+ protected:
+  Iterator::IteratorStatus start() override {
+    const auto status = LOCA::Stepper::start();
+    if (status != Iterator::Failed) {
+      state_.lastDpds = curPredictorPtr->getScalar(0);
+      tangent_ = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(curPredictorPtr->clone());
+    }
+    return status;
+  }
+
+  Iterator::StepStatus preprocess(Iterator::StepStatus stepStatus) override {
+    // LOCA 13.2 keeps the tangent of a point its tangent-factor test rejected
+    // as the predictor of the retry; the retry must start along the tangent
+    // of the last converged point.
+    if (stepStatus == Iterator::Unsuccessful && !tangent_.is_null()) *curPredictorPtr = *tangent_;
+    return LOCA::Stepper::preprocess(stepStatus);
+  }
+
+  Iterator::StepStatus postprocess(Iterator::StepStatus stepStatus) override {
+    if (stepStatus == Iterator::Unsuccessful) {
+      ++state_.result->failedSteps;
+      return LOCA::Stepper::postprocess(stepStatus);
+    }
+    const int iterations = solverPtr->getNumIterations();
+    const Real residual = residualNorm(solverPtr->getSolutionGroup());
+    if (correctorWentFar()) {
+      ++state_.result->failedSteps;
+      return LOCA::Stepper::postprocess(Iterator::Unsuccessful);
+    }
+    const auto status = LOCA::Stepper::postprocess(stepStatus);
+    if (status == Iterator::Unsuccessful) return status;
+    state_.result->newtonIterations += iterations;
+    ++state_.result->steps;
+    const Real dA = prevPredictorPtr->getScalar(0), dB = curPredictorPtr->getScalar(0);
+    PathPoint pt = point(*curGroupPtr);
+    pt.dpds = dB;
+    pt.iterations = iterations;
+    pt.residual = residual;
+    if (dA * dB < 0.0 && !locateFold(dA, dB)) {
+      // The fold could not be located between A and B: B stands for it.
+      pt.fold = true;
+      state_.result->folds.push_back(pt);
+      state_.stable = !state_.stable;
+    }
+    pt.stable = pt.fold || state_.stable;
+    report(pt);
+    state_.lastDpds = dB;
+    state_.lastStepSize = stepSize;
+    *tangent_ = *curPredictorPtr;
+    // Restart on a wider graph before the couplings of the path outgrow it.
+    if (!owner_.model_->graphCovers(*pt.x)) state_.restart = true;
+    return status;
+  }
+
+  Iterator::IteratorStatus stop(Iterator::StepStatus stepStatus) override {
+    if (owner_.model_->graphOutdated()) {
+      state_.restart = state_.widen = true;
+      owner_.model_->clearGraphOutdated();
+    }
+    if (state_.restart) return Iterator::Failed;
+    // The target: reached when the parameter gets to it moving away from the
+    // start (after any folds). LOCA's own bound logic assumes a monotonic
+    // parameter and declares the bound reached next to a fold that lies just
+    // short of it, so the target is not one of LOCA's bounds; LOCA's final
+    // natural step then lands on it from the point just beyond.
+    const auto& seg = *state_.segment;
+    if (stepStatus == Iterator::Successful) {
+      const Real value = curGroupPtr->getContinuationParameter();
+      const Real previous = prevGroupPtr->getContinuationParameter();
+      if (seg.direction * (value - seg.target) >= 0.0 && seg.direction * (value - previous) > 0.0) {
+        targetValue = seg.target;
+        return Iterator::Finished;
+      }
+    }
+    return LOCA::Stepper::stop(stepStatus);
+  }
+
+  Iterator::IteratorStatus finish(Iterator::IteratorStatus status) override {
+    const auto result = LOCA::Stepper::finish(status);
+    if (result == Iterator::Finished && isTargetStep) {
+      // The natural step that lands on the bound: same branch as the last point.
+      PathPoint pt = point(*curGroupPtr);
+      pt.dpds = state_.lastDpds;
+      pt.stable = state_.stable;
+      pt.iterations = solverPtr->getNumIterations();
+      pt.residual = residualNorm(solverPtr->getSolutionGroup());
+      state_.result->newtonIterations += pt.iterations;
+      report(pt);
+    }
+    return result;
+  }
+
+ private:
+  // True if the corrector moved farther from the predicted point than the
+  // step is long (in LOCA's scaled arclength): it left the part of the path
+  // the step was aimed at, e.g. across the snap of the contact zone; the step
+  // is then redone shorter rather than skip a piece of the path.
+  bool correctorWentFar() const {
+    auto d = curGroupPtr->getX().clone(NOX::DeepCopy);
+    d->update(-1.0, prevGroupPtr->getX(), -stepSize, *curPredictorPtr, 1.0);
+    const Real dist = std::sqrt(curGroupPtr->computeScaledDotProduct(*d, *d));
+    return dist > kMaxCorrection * std::abs(stepSize);
+  }
+  static constexpr Real kMaxCorrection = 0.5;
+
+  PathPoint point(const LOCA::MultiContinuation::AbstractStrategy& group) const {
+    const auto& g = *group.getUnderlyingGroup();
+    PathPoint pt;
+    pt.x = tpetraCopy(g.getX());
+    const auto& pv = g.getParams();
+    for (int k = 0; k < pv.length(); ++k) pt.p.push_back(pv[k]);
+    return pt;
+  }
+
+  void report(const PathPoint& pt) {
+    state_.result->last = pt;
+    state_.haveLast = true;
+    (*state_.observer)(pt);
+  }
+
+  // A fold lies between the previous point A (dp/ds = dA) and the current
+  // one B (dB): find the arclength t h from A (h the step A -> B) where dp/ds
+  // vanishes, each trial an arc-length corrector solve from A along A's
+  // tangent. Reports the fold and flips the stability; false if no trial converged.
+  bool locateFold(Real dA, Real dB) {
+    const Real h = stepSize;
+    auto trial = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(prevGroupPtr->clone());
+    Real bestAbs = std::abs(dA) < std::abs(dB) ? std::abs(dA) : std::abs(dB);
+    PathPoint best;
+    bool haveBest = false;
+    auto g = [&](Real t) -> Real {
+      trial->copy(*prevGroupPtr);
+      trial->setStepSize(t * h);
+      trial->setPrevX(prevGroupPtr->getX());
+      trial->computeX(*prevGroupPtr, *prevPredictorPtr, t * h);
+      auto solver = NOX::Solver::buildSolver(trial, noxStatusTestPtr, parsedParams->getSublist("NOX"));
+      if (solver->solve() != NOX::StatusTest::Converged)
+        throw NumericalError("fold location: the corrector did not converge at t = " + std::to_string(t));
+      state_.result->newtonIterations += solver->getNumIterations();
+      trial->copy(solver->getSolutionGroup());
+      trial->postProcessContinuationStep(Iterator::Successful);  // the tangent of this point, oriented by the secant
+      trial->computePredictor();
+      const Real d =
+          dynamic_cast<const LOCA::MultiContinuation::ExtendedVector&>(trial->getPredictorTangent()[0]).getScalar(0);
+      if (std::abs(d) < bestAbs || !haveBest) {
+        bestAbs = std::abs(d);
+        best = point(*trial);
+        best.dpds = d;
+        best.iterations = solver->getNumIterations();
+        best.residual = residualNorm(solver->getSolutionGroup());
+        haveBest = true;
+      }
+      return d;
+    };
+    try {
+      std::uintmax_t maxIterations = 30;
+      boost::math::tools::toms748_solve(
+          g, 0.0, 1.0, dA, dB, [](Real a, Real b) { return std::abs(b - a) <= 1e-9; }, maxIterations);
+    } catch (const std::exception&) {
+      // A trial did not converge: the best point found so far, if any, stands for the fold.
+    }
+    if (!haveBest) return false;
+    best.fold = true;
+    best.stable = true;  // marginal: the end of a stable branch or the start of one
+    state_.result->folds.push_back(best);
+    report(best);
+    state_.stable = !state_.stable;
+    return true;
+  }
+
+  Continuation& owner_;
+  Continuation::RunState& state_;
+  Teuchos::RCP<LOCA::MultiContinuation::ExtendedVector> tangent_;  ///< at the last converged point
+};
+
+Teuchos::RCP<Teuchos::ParameterList> Continuation::defaultLocaParameters() {
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("LOCA"));
+  auto& stepper = p->sublist("Stepper");
+  stepper.set("Continuation Method", "Arc Length");
+  stepper.set("Max Steps", 2000);
+  stepper.set("Compute Eigenvalues", false);
+  stepper.set("Hit Continuation Bound", true);
+  // Shorter steps where the path turns, and no step whose tangent turns by
+  // more than 37 degrees: at the sharp turns of adhesive contact (the snap of
+  // the apex onto the other surface) a long step can land on another part of
+  // the path, even behind the last point.
+  stepper.set("Enable Tangent Factor Step Size Scaling", true);
+  stepper.set("Min Tangent Factor", 0.8);
+  stepper.set("Tangent Factor Exponent", 1.0);
+  p->sublist("Predictor").set("Method", "Tangent");
+  auto& step = p->sublist("Step Size");
+  step.set("Method", "Adaptive");
+  step.set("Aggressiveness", 0.5);
+  step.set("Failed Step Reduction Factor", 0.5);
+  return p;
+}
+
+Continuation::Continuation(Teuchos::RCP<ParameterizedModel> model, const NewtonSettings& newton,
+                           const Teuchos::ParameterList& loca, bool print)
+    : model_(std::move(model)), newton_(newton), print_(print) {
+  for (const char* key : kOwnedStepperKeys)
+    if (loca.isSublist("Stepper") && loca.sublist("Stepper").isParameter(key))
+      throw InputError(std::string("LOCA/Stepper/") + key +
+                       ": set by cgcm from the Loading sublist (Continuation Parameter, Approach Path, Parameter "
+                       "Path, Parameter Bounds); remove it from the LOCA sublist");
+  if (loca.isSublist("Stepper") && loca.sublist("Stepper").isParameter("Max Nonlinear Iterations"))
+    throw InputError("LOCA/Stepper/Max Nonlinear Iterations: set by cgcm from Solver/Newton/Max Iterations");
+  loca_ = defaultLocaParameters();
+  loca_->setParameters(loca);
+  loca_->sublist("Stepper").set("Max Nonlinear Iterations", newton_.maxIterations);
+  lastParams_ = Teuchos::rcp(new Teuchos::ParameterList(*loca_));
+}
+
+Continuation::~Continuation() = default;
+
+namespace {
+
+// The parameter list of one stepper: LOCA's and the corrector's (NOX).
+Teuchos::RCP<Teuchos::ParameterList> runParameters(const Teuchos::ParameterList& loca, const std::string& name,
+                                                   Real start, Real lower, Real upper, Real initialStep,
+                                                   int maxSteps, bool print) {
+  auto params = Teuchos::rcp(new Teuchos::ParameterList("cgcm continuation"));
+  auto& l = params->sublist("LOCA");
+  l.setParameters(loca);
+  auto& stepper = l.sublist("Stepper");
+  stepper.set("Continuation Parameter", name);
+  stepper.set("Initial Value", start);
+  stepper.set("Min Value", lower);
+  stepper.set("Max Value", upper);
+  stepper.set("Max Steps", maxSteps);
+  l.sublist("Step Size").set("Initial Step Size", initialStep);
+  auto& nox = params->sublist("NOX");
+  nox.set("Nonlinear Solver", "Line Search Based");
+  nox.sublist("Line Search").set("Method", "Full Step");
+  nox.sublist("Direction").set("Method", "Newton");
+  // Evaluation errors (an inverted cell, touching surfaces) fail the step, which LOCA then cuts back.
+  nox.set("Catch Throws During Solve", true);
+  auto& printing = nox.sublist("Printing");
+  printing.set("Output Information", print ? (NOX::Utils::StepperIteration | NOX::Utils::Warning) : 0);
+  if (!print) {
+    // NOX reports a caught evaluation error on its output stream whatever the print level.
+    Teuchos::RCP<std::ostream> quiet = Teuchos::rcp(new Teuchos::oblackholestream);
+    printing.set("Output Stream", quiet);
+    printing.set("Error Stream", quiet);
+  }
+  return params;
+}
+
+}  // namespace
+
+void Continuation::validate(const Vector& x) {
+  const auto p = model_->parameters();
+  auto params = runParameters(*loca_, model_->parameterNames()[0], p[0], p[0] - 1.0, p[0] + 1.0, 1e-3,
+                              loca_->sublist("Stepper").get<int>("Max Steps"), false);
+  params->sublist("NOX").sublist("Printing").set("Output Information", 0);
+  auto data = LOCA::createGlobalData(params);
+  LOCA::ParameterVector pv;
+  for (std::size_t k = 0; k < p.size(); ++k) pv.addParameter(model_->parameterNames()[k], p[k]);
+  auto group = Teuchos::rcp(new LOCA::Thyra::Group(data, thyraCopy(x), model_, pv, 0));
+  ContinuationResult result;
+  RunState state;
+  ContinuationSegment segment;
+  segment.target = p[0] + 1.0;
+  state.segment = &segment;
+  result.last.x = Teuchos::rcp(new Vector(x, Teuchos::Copy));
+  Observer ignore = [](const PathPoint&) {};
+  state.observer = &ignore;
+  state.result = &result;
+  std::string unread;
+  {
+    PathStepper stepper(data, group, convergenceTests(newton_.tolerance(), newton_.maxIterations), params, *this,
+                        state);
+    stepper.dryStart();
+    const auto& used = params->sublist("LOCA");
+    for (const char* sub : {"Stepper", "Predictor", "Step Size"}) {
+      if (!loca_->isSublist(sub)) continue;
+      for (auto it = loca_->sublist(sub).begin(); it != loca_->sublist(sub).end(); ++it) {
+        const std::string& key = it->first;
+        if (loca_->sublist(sub).isSublist(key)) continue;
+        bool late = false;
+        for (const char* k : kLateStepperKeys) late = late || key == k;
+        if (late || used.sublist(sub).getEntry(key).isUsed()) continue;
+        unread += (unread.empty() ? "" : ", ") + std::string("LOCA/") + sub + "/" + key;
+      }
+    }
+  }
+  LOCA::destroyGlobalData(data);
+  if (!unread.empty())
+    throw InputError(unread + ": not a parameter of LOCA's " +
+                     "stepper, predictor or step size (LOCA did not read it); see the LOCA documentation for the "
+                     "names (e.g. LOCA/Stepper/Max Steps, LOCA/Step Size/Max Step Size, LOCA/Predictor/Method)");
+}
+
+ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment& segment, const Observer& observer) {
+  ContinuationResult result;
+  RunState state;
+  state.segment = &segment;
+  state.observer = &observer;
+  state.result = &result;
+  state.stable = segment.stableStart;
+  const std::string name = model_->parameterNames()[segment.parameter];
+  // LOCA's bounds: the runaway bound, and as far beyond the target on the other side.
+  const Real beyond = segment.target + segment.direction * std::abs(segment.target - segment.bound);
+  const Real lower = segment.direction > 0 ? segment.bound : beyond;
+  const Real upper = segment.direction > 0 ? beyond : segment.bound;
+  int maxSteps = loca_->sublist("Stepper").get<int>("Max Steps");
+
+  auto x = Teuchos::rcp(new Vector(x0, Teuchos::Copy));
+  std::vector<Real> p = model_->parameters();
+  Real initialStep = segment.direction * segment.initialStep;
+  result.last.x = x;
+  result.last.p = p;
+  result.last.stable = segment.stableStart;
+  for (;;) {
+    model_->clearGraphOutdated();
+    if (!model_->graphCovers(*x)) model_->growGraph(*x, false);
+    auto params = runParameters(*loca_, name, p[segment.parameter], lower, upper, initialStep, maxSteps, print_);
+    lastParams_ = params;
+    auto data = LOCA::createGlobalData(params);
+    LOCA::ParameterVector pv;
+    for (std::size_t k = 0; k < p.size(); ++k) pv.addParameter(model_->parameterNames()[k], p[k]);
+    auto group = Teuchos::rcp(new LOCA::Thyra::Group(data, thyraCopy(*x), model_, pv, 0));
+    Iterator::IteratorStatus status;
+    const int stepsBefore = result.steps + result.failedSteps;
+    {
+      PathStepper stepper(data, group, convergenceTests(newton_.tolerance(), newton_.maxIterations), params, *this,
+                          state);
+      try {
+        status = stepper.run();
+      } catch (const std::exception& e) {
+        status = Iterator::Failed;
+        result.failure = e.what();
+      } catch (const char* e) {  // some NOX and LOCA failures throw a bare string
+        status = Iterator::Failed;
+        result.failure = std::string("LOCA: ") + e;
+      }
+    }
+    LOCA::destroyGlobalData(data);
+    maxSteps -= result.steps + result.failedSteps - stepsBefore;
+    if (state.restart && maxSteps > 0 && result.restarts < 100) {
+      // Continue from the last converged point on a graph that covers it.
+      state.restart = false;
+      x = result.last.x;
+      p = result.last.p;
+      model_->growGraph(*x, state.widen);
+      state.widen = false;
+      // LOCA's first step moves the parameter by the initial step (signed).
+      const Real dp = state.lastStepSize * state.lastDpds;
+      initialStep = std::abs(dp) > 1e-3 * segment.initialStep
+                        ? dp : std::copysign(1e-3 * segment.initialStep, dp == 0.0 ? segment.direction : dp);
+      ++result.restarts;
+      continue;
+    }
+    const Real reachedValue = result.last.p[segment.parameter];
+    const Real scale = std::abs(segment.target) + std::abs(segment.bound) + 1e-300;
+    if (status == Iterator::Finished && std::abs(reachedValue - segment.target) <= 1e-12 * scale) {
+      result.reached = true;
+    } else if (result.failure.empty()) {
+      std::ostringstream msg;
+      msg << "continuation in " << name << " stopped at " << name << " = " << reachedValue << " after "
+          << result.steps << " steps";
+      if (status == Iterator::Finished)
+        msg << ": it reached the bound " << segment.bound << " before the target " << segment.target;
+      else if (maxSteps <= 0)
+        msg << ": LOCA/Stepper/Max Steps reached";
+      else
+        msg << ": the step size fell below LOCA/Step Size/Min Step Size (the corrector did not converge)";
+      result.failure = msg.str();
+    }
+    break;
+  }
+  return result;
+}
+
+}  // namespace cgcm::solver

@@ -1,0 +1,54 @@
+#include "cgcm/solver/Convergence.hpp"
+
+#include <LOCA_MultiContinuation_ExtendedVector.H>
+#include <NOX_Abstract_Group.H>
+#include <NOX_Solver_Generic.H>
+#include <NOX_StatusTest_Combo.H>
+#include <NOX_StatusTest_FiniteValue.H>
+#include <NOX_StatusTest_MaxIters.H>
+
+#include <cmath>
+#include <ostream>
+
+namespace cgcm::solver {
+
+Real residualNorm(const NOX::Abstract::Group& group) {
+  const NOX::Abstract::Vector& F = group.getF();
+  if (const auto* ext = dynamic_cast<const LOCA::MultiContinuation::ExtendedVector*>(&F))
+    return ext->getXVec()->norm(NOX::Abstract::Vector::TwoNorm);
+  return F.norm(NOX::Abstract::Vector::TwoNorm);
+}
+
+NOX::StatusTest::StatusType ResidualNormTest::checkStatus(const NOX::Solver::Generic& solver,
+                                                          NOX::StatusTest::CheckType type) {
+  if (type == NOX::StatusTest::None) {
+    status_ = NOX::StatusTest::Unevaluated;
+    return status_;
+  }
+  const NOX::Abstract::Group& group = solver.getSolutionGroup();
+  norm_ = residualNorm(group);
+  bool constraintsHold = true;
+  if (const auto* ext = dynamic_cast<const LOCA::MultiContinuation::ExtendedVector*>(&group.getF())) {
+    const auto& g = *ext->getScalars();
+    for (int i = 0; i < g.numRows(); ++i)
+      for (int j = 0; j < g.numCols(); ++j) constraintsHold = constraintsHold && std::abs(g(i, j)) <= constraintTolerance_;
+  }
+  status_ = (norm_ <= tolerance_ && constraintsHold) ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+  return status_;
+}
+
+std::ostream& ResidualNormTest::print(std::ostream& stream, int indent) const {
+  for (int i = 0; i < indent; ++i) stream << ' ';
+  return stream << status_ << "|f|_2 = " << norm_ << " <= " << tolerance_ << " (force units)\n";
+}
+
+Teuchos::RCP<NOX::StatusTest::Generic> convergenceTests(Real tolerance, int maxIterations) {
+  using namespace NOX::StatusTest;
+  auto tests = Teuchos::rcp(new Combo(Combo::OR));
+  tests->addStatusTest(Teuchos::rcp(new FiniteValue));
+  tests->addStatusTest(Teuchos::rcp(new ResidualNormTest(tolerance)));
+  tests->addStatusTest(Teuchos::rcp(new MaxIters(maxIterations)));
+  return tests;
+}
+
+}  // namespace cgcm::solver

@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Where the approach of the sphere on the half-space becomes stable: for each
+gammaL, the critical gammaW below which the approach jumps into contact.
+
+For a given (gammaL, gammaW) cgcm follows the approach by arc-length
+continuation (inputs/sphere-on-half-space.xml, Loading/Control = arc-length)
+from 6 r0 apart to 2 r0 past the equilibrium gap. The approach is unstable
+when the path has a jump-to-contact: a fold that ends the stable branch of
+the bodies apart, recognised by its apex gap above 1.1 r_S0 (the small loops
+a coarse contact zone adds while the contact grows ring by ring sit at gaps
+of 1.0-1.05 r_S0). The critical gammaW is bracketed in log gammaW until the
+bracket is 3 % wide (bisection with the fold detector); u and P at the
+critical point are those of the jump-in fold at the unstable end of the
+bracket, where the two folds of the loop are about to merge.
+
+Writes stability_boundary.csv (gammaL, gammaW_crit, gammaW_stable,
+gammaW_unstable, u_crit, P_crit, tabor_mu_crit) and stability_map.png.
+
+    stability_map.py --build build --output output/stability-map [--gammaL 10 20 50 100 200]
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+F_W = math.pi / 8 * 15 ** (1 / 3)        # w = f_w beta0^2 eps r0^4
+TABOR = 2.3746                            # mu = TABOR (gammaL / gammaW^2)^(1/3) at nu = 0.2
+
+
+def tabor(gl, gw):
+    return TABOR * (gl / gw ** 2) ** (1 / 3)
+
+
+def run(build, out, gl, gw):
+    """Approach of (gl, gw); returns the jump-in fold (u, P) or None."""
+    r0 = 1.0 / gl
+    rs0 = r0 / 15 ** (1 / 6)
+    zone = min(0.5, max(0.1, 30 * r0))  # fine cells of about r0 / 1.5 around the contact
+    name = os.path.join(out, f"gL{gl:g}-gW{gw:.6g}")
+    args = [os.path.join(build, "bin", "cgcm"), os.path.join(ROOT, "inputs", "sphere-on-half-space.xml"),
+            f"Output/Directory={name}", "Output/Print Steps=false", "Loading/Control=arc-length",
+            f"Interaction/gammaL={gl:.10g}", f"Interaction/gammaW={gw:.10g}",
+            f"Geometry/Contact Zone Size={zone:.4g}",
+            f"Loading/Approach Path={{{-6 * r0:.6g},{2 * r0:.6g}}}",
+            f"Loading/Initial Increment={r0 / 20:.6g}", f"Loading/Max Increment={r0 / 10:.6g}",
+            f"Loading/Min Increment={r0 * 1e-6:.6g}"]
+    proc = subprocess.run(args, capture_output=True, text=True)
+    if proc.returncode != 0:
+        sys.exit(f"cgcm failed for gammaL = {gl}, gammaW = {gw}:\n{proc.stderr}")
+    with open(os.path.join(name, "load_curve.csv"), newline="") as f:
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    for r in rows:
+        if r["fold"] > 0 and r["gap"] > 1.1 * rs0:
+            return r["u"], r["P"]
+    return None
+
+
+def critical(build, out, gl, width=0.03):
+    guess = math.sqrt(gl * (TABOR / 0.65) ** 3)  # Tabor mu = 0.65
+    lo, hi = 0.5 * guess, 2.0 * guess           # lo: unstable, hi: stable
+    fold_lo = run(build, out, gl, lo)
+    while fold_lo is None:
+        hi, lo = lo, lo / 2
+        fold_lo = run(build, out, gl, lo)
+    fold_hi = run(build, out, gl, hi)
+    while fold_hi is not None:
+        lo, fold_lo, hi = hi, fold_hi, hi * 2
+        fold_hi = run(build, out, gl, hi)
+    while hi / lo > 1 + width:
+        mid = math.sqrt(lo * hi)
+        fold = run(build, out, gl, mid)
+        if fold is None:
+            hi = mid
+        else:
+            lo, fold_lo = mid, fold
+        print(f"  gammaL {gl:g}: gammaW in [{lo:.4g}, {hi:.4g}]", flush=True)
+    return lo, hi, fold_lo
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--output", default="output/stability-map")
+    ap.add_argument("--gammaL", type=float, nargs="+", default=[10, 20, 50, 100, 200])
+    a = ap.parse_args()
+    os.makedirs(a.output, exist_ok=True)
+    rows = []
+    for gl in a.gammaL:
+        lo, hi, (u, p) = critical(a.build, a.output, gl)
+        gw = math.sqrt(lo * hi)
+        rows.append({"gammaL": gl, "gammaW_crit": gw, "gammaW_stable": hi, "gammaW_unstable": lo, "u_crit": u,
+                     "P_crit": p, "tabor_mu_crit": tabor(gl, gw)})
+        print(f"gammaL = {gl:g}: gammaW_crit = {gw:.4g} (Tabor mu {tabor(gl, gw):.3f}), fold at u = {u:.5g}, "
+              f"P = {p:.5g}", flush=True)
+    path = os.path.join(a.output, "stability_boundary.csv")
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print(f"wrote {path}")
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    gls = [r["gammaL"] for r in rows]
+    ax.errorbar(gls, [r["gammaW_crit"] for r in rows],
+                yerr=[[r["gammaW_crit"] - r["gammaW_unstable"] for r in rows],
+                      [r["gammaW_stable"] - r["gammaW_crit"] for r in rows]], fmt="o-", label="cgcm: critical gammaW")
+    span = [min(gls) / 1.5, max(gls) * 1.5]
+    for mu in (0.6, 0.7):
+        ax.plot(span, [math.sqrt(g * (TABOR / mu) ** 3) for g in span], ":", lw=1, label=f"Tabor mu = {mu}")
+    # the paper's statement at gammaL bar = 50 (literal reading): gammaW bar = 50 jumps, 100 does not
+    glp = 50 / 0.75 ** (1 / 6)
+    ax.plot([glp], [50 / math.sqrt(3)], "rx", label="paper: unstable (gammaW bar 50)")
+    ax.plot([glp], [100 / math.sqrt(3)], "g+", ms=9, label="paper: stable (gammaW bar 100)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("gammaL = R0 / r0")
+    ax.set_ylabel("gammaW")
+    ax.set_title("jump-to-contact on approach below the curve")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.output, "stability_map.png"), dpi=120)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
