@@ -90,8 +90,14 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--output", default="output/stability-map")
     ap.add_argument("--gammaL", type=float, nargs="+", default=[10, 20, 50, 100, 200])
+    ap.add_argument("--plot-only", action="store_true", help="plot an existing stability_boundary.csv")
     a = ap.parse_args()
     os.makedirs(a.output, exist_ok=True)
+    path = os.path.join(a.output, "stability_boundary.csv")
+    if a.plot_only:
+        with open(path, newline="") as f:
+            plot([{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)], a.output)
+        return 0
     rows = []
     for gl in a.gammaL:
         lo, hi, (u, p) = critical(a.build, a.output, gl)
@@ -100,20 +106,23 @@ def main():
                      "P_crit": p, "tabor_mu_crit": tabor(gl, gw)})
         print(f"gammaL = {gl:g}: gammaW_crit = {gw:.4g} (Tabor mu {tabor(gl, gw):.3f}), fold at u = {u:.5g}, "
               f"P = {p:.5g}", flush=True)
-    path = os.path.join(a.output, "stability_boundary.csv")
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
     print(f"wrote {path}")
+    plot(rows, a.output)
+    return 0
 
+
+def plot(rows, out):
     fig, ax = plt.subplots(figsize=(6, 4.5))
     gls = [r["gammaL"] for r in rows]
     ax.errorbar(gls, [r["gammaW_crit"] for r in rows],
                 yerr=[[r["gammaW_crit"] - r["gammaW_unstable"] for r in rows],
                       [r["gammaW_stable"] - r["gammaW_crit"] for r in rows]], fmt="o-", label="cgcm: critical gammaW")
     span = [min(gls) / 1.5, max(gls) * 1.5]
-    for mu in (0.6, 0.7):
+    for mu in (0.7, 0.8):
         ax.plot(span, [math.sqrt(g * (TABOR / mu) ** 3) for g in span], ":", lw=1, label=f"Tabor mu = {mu}")
     # the paper's statement at gammaL bar = 50 (literal reading): gammaW bar = 50 jumps, 100 does not
     glp = 50 / 0.75 ** (1 / 6)
@@ -126,8 +135,7 @@ def main():
     ax.set_title("jump-to-contact on approach below the curve")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(a.output, "stability_map.png"), dpi=120)
-    return 0
+    fig.savefig(os.path.join(out, "stability_map.png"), dpi=120)
 
 
 if __name__ == "__main__":

@@ -95,12 +95,16 @@ class PathStepper : public LOCA::Stepper {
     }
     const int iterations = solverPtr->getNumIterations();
     const Real residual = residualNorm(solverPtr->getSolutionGroup());
-    if (correctorWentFar()) {
+    if (!atCorner() && correctorWentFar()) {
       ++state_.result->failedSteps;
       return LOCA::Stepper::postprocess(Iterator::Unsuccessful);
     }
     const auto status = LOCA::Stepper::postprocess(stepStatus);
     if (status == Iterator::Unsuccessful) return status;
+    if (!atCorner() && turnCosine() < kMinTurnCosine) {
+      ++state_.result->failedSteps;  // the retry starts from the last point's tangent (preprocess)
+      return Iterator::Unsuccessful;
+    }
     state_.result->newtonIterations += iterations;
     ++state_.result->steps;
     const Real dA = prevPredictorPtr->getScalar(0), dB = curPredictorPtr->getScalar(0);
@@ -163,17 +167,45 @@ class PathStepper : public LOCA::Stepper {
   }
 
  private:
-  // True if the corrector moved farther from the predicted point than the
-  // step is long (in LOCA's scaled arclength): it left the part of the path
-  // the step was aimed at, e.g. across the snap of the contact zone; the step
-  // is then redone shorter rather than skip a piece of the path.
+  // True if the corrector moved some dof farther from the predicted point
+  // than half the largest change the predictor made: it left the part of the
+  // path the step was aimed at (e.g. the apex snapped onto the other surface
+  // or off it, skipping a loop), and the step is redone shorter. The largest
+  // dof change, not LOCA's RMS arclength: a snap moves only the nodes near the
+  // contact, which an RMS over the whole mesh hides.
   bool correctorWentFar() const {
+    auto predicted = prevGroupPtr->getX().clone(NOX::DeepCopy);
+    predicted->update(stepSize, *curPredictorPtr, 1.0);
     auto d = curGroupPtr->getX().clone(NOX::DeepCopy);
-    d->update(-1.0, prevGroupPtr->getX(), -stepSize, *curPredictorPtr, 1.0);
-    const Real dist = std::sqrt(curGroupPtr->computeScaledDotProduct(*d, *d));
-    return dist > kMaxCorrection * std::abs(stepSize);
+    d->update(-1.0, *predicted, 1.0);
+    using LOCA::MultiContinuation::ExtendedVector;
+    const Real correction = dynamic_cast<const ExtendedVector&>(*d).getXVec()->norm(NOX::Abstract::Vector::MaxNorm);
+    const Real change = std::abs(stepSize) *
+                        dynamic_cast<const ExtendedVector&>(*curPredictorPtr).getXVec()->norm(NOX::Abstract::Vector::MaxNorm);
+    return correction > kMaxCorrection * change;
   }
   static constexpr Real kMaxCorrection = 0.5;
+
+  // Cosine of the angle between the tangents at the new and the last point.
+  // A step whose tangent turns by more than 37 degrees is redone shorter: at
+  // the sharp turns of adhesive contact (the snap of the apex onto the other
+  // surface) a long step can land on another part of the path, even behind
+  // the last point.
+  Real turnCosine() const {
+    const Real ab = curGroupPtr->computeScaledDotProduct(*curPredictorPtr, *prevPredictorPtr);
+    const Real aa = curGroupPtr->computeScaledDotProduct(*curPredictorPtr, *curPredictorPtr);
+    const Real bb = curGroupPtr->computeScaledDotProduct(*prevPredictorPtr, *prevPredictorPtr);
+    return ab / std::sqrt(aa * bb);
+  }
+  static constexpr Real kMinTurnCosine = 0.8;
+
+  // The two tests above hold back long steps only. The residual is C1 but
+  // not C2 (a closest point entering a vertex region), so the path has
+  // points where it turns by a finite angle; steps this short pass them.
+  bool atCorner() {
+    return std::abs(stepSize) <= kCornerSteps * getStepSizeParams().get<double>("Min Step Size");
+  }
+  static constexpr Real kCornerSteps = 16.0;
 
   PathPoint point(const LOCA::MultiContinuation::AbstractStrategy& group) const {
     const auto& g = *group.getUnderlyingGroup();
@@ -252,13 +284,6 @@ Teuchos::RCP<Teuchos::ParameterList> Continuation::defaultLocaParameters() {
   stepper.set("Max Steps", 2000);
   stepper.set("Compute Eigenvalues", false);
   stepper.set("Hit Continuation Bound", true);
-  // Shorter steps where the path turns, and no step whose tangent turns by
-  // more than 37 degrees: at the sharp turns of adhesive contact (the snap of
-  // the apex onto the other surface) a long step can land on another part of
-  // the path, even behind the last point.
-  stepper.set("Enable Tangent Factor Step Size Scaling", true);
-  stepper.set("Min Tangent Factor", 0.8);
-  stepper.set("Tangent Factor Exponent", 1.0);
   p->sublist("Predictor").set("Method", "Tangent");
   auto& step = p->sublist("Step Size");
   step.set("Method", "Adaptive");
