@@ -8,6 +8,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
+#include "cgcm/mesh/Overlap.hpp"
 
 namespace cgcm::mesh {
 namespace {
@@ -202,6 +203,55 @@ TEST(Benchmark, GradingsFillTheirLength) {
   EXPECT_EQ(f.back(), 8.0);
   for (std::size_t k = 21; k < f.size(); ++k) EXPECT_GT(f[k] - f[k - 1], f[k - 1] - f[k - 2] - 1e-12);
   EXPECT_THROW(fineThenGeometric(1.0, 2.0, 4, 4), InputError);
+}
+
+// Two bodies: a rectangle and a second one at (x0, y0) with its own size and cells.
+Mesh twoRectangles(Real x0, Real y0, Real lx, Real ly, int nx, int ny) {
+  RectangleSpec a;
+  a.nx = a.ny = 2;
+  a.name = "a";
+  Mesh m = rectangle(a);
+  RectangleSpec b;
+  b.x0 = x0, b.y0 = y0, b.lx = lx, b.ly = ly, b.nx = nx, b.ny = ny;
+  b.name = "b";
+  append(m, rectangle(b), "b ");
+  return m;
+}
+
+Mesh twoBoxes(Real x0, bool tetrahedra) {
+  BoxSpec a;
+  a.nx = a.ny = a.nz = 2;
+  a.tetrahedra = tetrahedra;
+  a.name = "a";
+  Mesh m = box(a);
+  BoxSpec b = a;
+  b.x0 = x0, b.y0 = 0.3, b.z0 = 0.2;
+  b.name = "b";
+  append(m, box(b), "b ");
+  return m;
+}
+
+TEST(Overlap, FindsNodesInsideCellsAndCrossingBoundaries) {
+  EXPECT_EQ(findBodyOverlap(twoRectangles(0.0, 1.5, 1.0, 1.0, 2, 2)), "");  // apart
+  EXPECT_EQ(findBodyOverlap(twoRectangles(1.0, 0.0, 1.0, 1.0, 3, 3)), "");  // touching along x = 1
+  const std::string inside = findBodyOverlap(twoRectangles(0.7, 0.7, 1.0, 1.0, 2, 2));
+  EXPECT_NE(inside.find("lies inside a cell of body"), std::string::npos) << inside;
+  // a cross: no node of either lies inside the other, the boundaries cross
+  const std::string cross = findBodyOverlap(twoRectangles(-0.5, 0.6, 2.0, 0.2, 1, 1));
+  EXPECT_NE(cross.find("the boundaries of body \"a\" and body \"b\" cross"), std::string::npos) << cross;
+  for (bool tets : {false, true}) {
+    EXPECT_EQ(findBodyOverlap(twoBoxes(1.0, tets)), "") << tets;
+    EXPECT_NE(findBodyOverlap(twoBoxes(0.6, tets)), "") << tets;
+  }
+  // a thin slab through the first box between its node layers: only the boundaries cross
+  BoxSpec a;
+  a.nx = a.ny = a.nz = 2;
+  Mesh slab = box(a);
+  BoxSpec b;
+  b.x0 = b.y0 = -0.5, b.z0 = 0.6, b.lx = b.ly = 2.0, b.lz = 0.1;
+  append(slab, box(b), "b ");
+  const std::string through = findBodyOverlap(slab);
+  EXPECT_NE(through.find("cross"), std::string::npos) << through;
 }
 
 }  // namespace
