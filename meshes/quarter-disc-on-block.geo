@@ -68,4 +68,4 @@ Physical Curve("fixed") = {11};
 Physical Curve("contact:sphere") = {5, 6};
 Physical Curve("contact:substrate") = {13};
 Physical Point("apex") = {3};
-Physical Point("substrate apex") = {14};
+Physical Point("lower apex") = {14};

@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
 
@@ -202,7 +203,7 @@ TEST_F(Gmsh, QuarterDiscOnBlock) {
   // disc: three 7 x 7 patches sharing two edges and their corner; block 13 x 13
   EXPECT_EQ(m.numNodes(), (49 + 42 + 36) + 169);
   EXPECT_EQ(nodeSetNames(m), (std::vector<std::string>{"apex", "axis", "contact:sphere", "contact:substrate", "driven",
-                                                       "fixed", "substrate apex"}));
+                                                       "fixed", "lower apex"}));
   const auto volume = checkGeometry(m);
   EXPECT_NEAR(volume[0], M_PI / 4, 0.01);  // inscribed polygon
   EXPECT_NEAR(volume[1], 9.0, 1e-12);
@@ -220,6 +221,54 @@ TEST_F(Gmsh, QuarterDiscOnBlock) {
   for (LocalIndex n : m.nodeSet("fixed")) EXPECT_EQ(m.coord(n, 1), -3.0);
   for (LocalIndex n : m.nodeSet("driven")) EXPECT_NEAR(m.coord(n, 1), 1.05, 1e-15);
   EXPECT_EQ(m.nodeSet("axis").size(), 26u);
+}
+
+// Node coordinates sorted by column, then height (columns on a 1e-9 grid).
+std::vector<std::pair<double, double>> sortedNodes(const Mesh& m) {
+  std::vector<std::pair<double, double>> p;
+  for (LocalIndex n = 0; n < m.numNodes(); ++n) p.push_back({std::round(m.coord(n, 0) * 1e9), m.coord(n, 1)});
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
+void expectSameNodes(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.numNodes(), b.numNodes());
+  ASSERT_EQ(a.numCells(), b.numCells());
+  const auto pa = sortedNodes(a), pb = sortedNodes(b);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < pa.size(); ++k)
+    worst = std::max({worst, std::abs(pa[k].first - pb[k].first) * 1e-9, std::abs(pa[k].second - pb[k].second)});
+  EXPECT_LT(worst, 1e-12);
+}
+
+// The benchmark .geo files make the built-in generator's meshes node for node.
+TEST_F(Gmsh, BenchmarkGeoFilesMatchTheBuiltInGenerator) {
+  const double rS0 = 0.02 / std::pow(15.0, 1.0 / 6.0);
+  for (int level : {0, 1}) {
+    GmshOptions o = dim(2);
+    o.numbers["level"] = level;
+    QuarterDiskSpec sphere;
+    sphere.centerY = 1.0 + rS0;
+    sphere.refinement = level;
+    Mesh builtIn = quarterDisk(sphere);
+    HalfSpaceSpec h;
+    h.refinement = level;
+    append(builtIn, halfSpaceBlock(h), "lower ");
+    const Mesh onHalfSpace = readGmsh(kMeshes + "/sphere-on-half-space.geo", o);
+    expectSameNodes(onHalfSpace, builtIn);
+    EXPECT_EQ(onHalfSpace.nodeSet("driven").size(), builtIn.nodeSet("equator").size());
+    EXPECT_EQ(onHalfSpace.nodeSet("fixed").size(), builtIn.nodeSet("lower bottom").size());
+    EXPECT_EQ(onHalfSpace.surfaces[0].numFacets(), 32 << level);  // the arc
+    EXPECT_EQ(onHalfSpace.surfaces[1].numFacets(), 30 << level);  // the top
+
+    QuarterDiskSpec second;
+    second.centerY = -1.0;
+    second.lowerHalf = false;
+    second.refinement = level;
+    Mesh twoSpheres = quarterDisk(sphere);
+    append(twoSpheres, quarterDisk(second), "lower ");
+    expectSameNodes(readGmsh(kMeshes + "/sphere-on-sphere.geo", o), twoSpheres);
+  }
 }
 
 TEST_F(Gmsh, HexBlock) {
