@@ -17,6 +17,8 @@ packages=(
   libblas-dev liblapack-dev
   # geometry, meshing, output
   libcgal-dev libgmp-dev libmpfr-dev libgmsh-dev libexodusii-dev libnetcdf-dev
+  # Boost.Math (root finding in the fold location)
+  libboost-dev
   # tests and plots
   googletest libgtest-dev python3 python3-numpy python3-matplotlib
 )

@@ -18,6 +18,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from plot_load_curves import draw  # noqa: E402
+
 
 def run(cmd):
     out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
@@ -42,10 +44,10 @@ def main():
     fF, fd = m["f_F"][0], m["f_delta"][0]
     with open(a.curve, newline="") as f:
         rows = list(csv.DictReader(f))
-    u = [float(r["u"]) for r in rows]
-    P = [float(r["P"]) for r in rows]
+    c = {k: [float(r[k]) for r in rows] for k in rows[0]}
+    u, P = c["u"], c["P"]
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
-    ax.plot(u, P, lw=1.6, label="CGCM (Method 3, large deformation)")
+    draw(ax, c, P, lw=1.6, label="CGCM (Method 3, large deformation; dashed: unstable)")
     ax.plot([fd * d for d in md["delta"]], [fF * p for p in md["P"]], "--", lw=1.2,
             label=f"Maugis-Dugdale, lambda = {float(lam):.3g}")
     ax.plot([fd * d for d in jkr["delta"]], [fF * p for p in jkr["P"]], ":", lw=1.0, label="JKR")

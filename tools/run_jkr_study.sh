@@ -11,8 +11,8 @@ out=output/validation/jkr-study
 mkdir -p "$out"
 deck=inputs/validation/jkr-limit.xml
 # name | overrides of the deck (gammaL = 800, gammaW = 24.8, level 1, zone 0.1)
-g200="Interaction/gammaL=200;Interaction/gammaW=12.4;Loading/Approach Path={-0.01,0.01,-0.009};Loading/Initial Increment=0.0005;Loading/Max Increment=0.0005"
-base="Loading/Approach Adhesion Scale=1;Geometry/Mesh Refinement=0;Geometry/Contact Zone Size=0.5;Loading/Initial Increment=0.001;Loading/Max Increment=0.002"
+g200="Interaction/gammaL=200;Interaction/gammaW=12.4;Loading/Approach Path={-0.015,0.01,-0.009};Loading/Initial Increment=0.0005;Loading/Max Increment=0.0005"
+base="Geometry/Mesh Refinement=0;Geometry/Contact Zone Size=0.5;Loading/Initial Increment=0.001;Loading/Max Increment=0.002"
 cases=(
   "gammaL50-gammaW200-L0|$base;Interaction/gammaL=50;Interaction/gammaW=200;Loading/Approach Path={-0.02,0.06,-0.03}"
   "gammaL50-gammaW20-L0|$base;Interaction/gammaL=50;Interaction/gammaW=20;Loading/Approach Path={-0.03,0.0,-0.04}"
