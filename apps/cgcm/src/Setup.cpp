@@ -3,6 +3,8 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
@@ -10,6 +12,8 @@
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
+#include "cgcm/mesh/GmshReader.hpp"
+#include "cgcm/mesh/Overlap.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
 #include "cgcm/solver/NewtonSolver.hpp"
@@ -65,9 +69,23 @@ RCP<const ParameterList> validParameters() {
   auto& geometry = valid->sublist("Geometry", false, "bodies and their mesh");
   geometry.set("Type", "sphere on half-space",
                "\"sphere on half-space\" (the paper's benchmark; cylinder on half-space in plane strain), "
-               "\"sphere on sphere\", or \"block\" (a rectangle or box stretched along its last axis)",
-               choices({"sphere on half-space", "sphere on sphere", "block"}));
-  geometry.set("Sphere Radius", 1.0, "radius R0 of the upper sphere: the reference length", atLeast(1e-300));
+               "\"sphere on sphere\", \"block\" (a rectangle or box stretched along its last axis), or \"gmsh\" "
+               "(the mesh of Geometry/File; meshes/README.md)",
+               choices({"sphere on half-space", "sphere on sphere", "block", "gmsh"}));
+  geometry.set("File", "",
+               "Type = gmsh: a gmsh .geo (meshed when read) or .msh file; a relative path is taken from the "
+               "deck's folder. Node sets (physical groups) used: \"driven\" (its last displacement component is "
+               "-u, the rest of its body starts translated with it), \"fixed\" (all components 0), \"axis\" and "
+               "\"symmetry x|y|z\" (that component 0), \"apex\" and \"lower apex\" (one node each: the gap and "
+               "contact radius columns, and u = 0 where they are r_S0 apart)");
+  geometry.sublist("Mesh Numbers", false,
+                   "Type = gmsh: values for DefineConstant[] numbers of the .geo, e.g. level = 1 "
+                   "(gmsh -setnumber)")
+      .disableRecursiveValidation();
+  geometry.set("Sphere Radius", 1.0,
+               "radius R0 of the upper sphere: the reference length (with a gmsh mesh: R0 of gammaL = R0/r0 and of "
+               "the force unit)",
+               atLeast(1e-300));
   geometry.set("Second Sphere Radius", 1.0, "radius of the lower sphere (Type = sphere on sphere)",
                atLeast(1e-300));
   geometry.set("Half-Space Size", 8.0, "width and depth of the half-space block, in sphere radii (>= 2)",
@@ -176,6 +194,9 @@ RCP<const ParameterList> validParameters() {
   auto& output = valid->sublist("Output", false, "what is written where");
   output.set("Directory", "output", "folder for the load curve and the echoed parameters (created if missing)");
   output.set("Print Steps", true, "print one line per load step");
+  output.set("Exodus", true,
+             "write results.e (Exodus II: displacement, stress and interaction traction fields per load-curve row; "
+             "ParaView)");
   return valid;
 }
 
@@ -326,7 +347,95 @@ void buildSphereContact(const ParameterList& deck, ProblemSetup& s) {
   s.contact = ContactGeometry{"apex", "lower apex", 0, 1, rS0};
 }
 
+// Number overrides of a .geo: every entry of Geometry/Mesh Numbers, a number.
+std::map<std::string, double> meshNumbers(const ParameterList& numbers) {
+  std::map<std::string, double> out;
+  for (auto it = numbers.begin(); it != numbers.end(); ++it) {
+    const auto& entry = numbers.entry(it);
+    const std::string name = numbers.name(it);
+    if (entry.isType<double>()) out[name] = entry.getValue<double>(nullptr);
+    else if (entry.isType<int>()) out[name] = entry.getValue<int>(nullptr);
+    else throw InputError("Geometry/Mesh Numbers/" + name + ": a number is expected");
+  }
+  return out;
+}
+
+// A mesh from gmsh with the physical-group convention of meshes/README.md
+// mapped to boundary conditions; Lennard-Jones between all bodies when there
+// are several.
+void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
+  const auto& g = deck.sublist("Geometry");
+  const std::string file = g.get<std::string>("File");
+  if (file.empty()) throw InputError("Geometry/Type = \"gmsh\" needs Geometry/File (a gmsh .geo or .msh file)");
+  mesh::GmshOptions options;
+  options.dim = assembly::formulationDim(s.formulation);
+  if (g.isSublist("Mesh Numbers")) options.numbers = meshNumbers(g.sublist("Mesh Numbers"));
+  auto m = std::make_shared<mesh::Mesh>(mesh::readGmsh(file, options));
+  const auto fail = [&](const std::string& what) { throw InputError("mesh file \"" + file + "\": " + what); };
+  if (s.formulation == assembly::Formulation::Axisymmetric)
+    for (LocalIndex n = 0; n < m->numNodes(); ++n)
+      if (m->coord(n, 0) < 0.0)
+        fail("node " + std::to_string(n) + " has x = " + std::to_string(m->coord(n, 0)) +
+             " < 0; axisymmetric meshes lie in x >= 0 (x is the radius)");
+  if (const std::string overlap = mesh::findBodyOverlap(*m); !overlap.empty())
+    fail("bodies overlap in the reference configuration: " + overlap);
+  if (!m->nodeSets.count("driven"))
+    fail("no physical group \"driven\" (where the approach u is applied; meshes/README.md)");
+
+  const int dim = m->dim, vertical = dim - 1;
+  std::vector<int> nodeBody(m->numNodes(), 0);
+  for (const auto& b : m->blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
+  auto bodyOf = [&](const std::string& set) { return nodeBody[m->nodeSet(set).front()]; };
+  // the bodies the driven set belongs to move rigidly with it at the start
+  std::vector<char> drivenBody(m->numBodies, 0);
+  for (LocalIndex n : m->nodeSet("driven")) drivenBody[nodeBody[n]] = 1;
+  auto& moving = m->nodeSets["driven body"];
+  for (LocalIndex n = 0; n < m->numNodes(); ++n)
+    if (drivenBody[nodeBody[n]]) moving.push_back(n);
+
+  const Real R0 = g.get<double>("Sphere Radius"), Y = s.material.youngsModulus();
+  Real offset = 0.0;
+  if (m->numBodies > 1) {
+    s.interaction = buildInteraction(deck.sublist("Interaction"), R0, Y, s.material.poissonRatio(), R0,
+                                     s.formulation, s.report, s.forceScale);
+    s.interaction->densities.assign(m->numBodies, s.interaction->densities.front());
+    const Real rS0 = s.interaction->potential->r0() / std::pow(15.0, 1.0 / 6.0);
+    if (m->nodeSets.count("apex") && m->nodeSets.count("lower apex")) {
+      for (const char* set : {"apex", "lower apex"})
+        if (m->nodeSet(set).size() != 1)
+          fail("node set \"" + std::string(set) + "\" has " + std::to_string(m->nodeSet(set).size()) +
+               " nodes; it must be one point");
+      s.contact = ContactGeometry{"apex", "lower apex", bodyOf("apex"), bodyOf("lower apex"), rS0};
+      // u = 0 where the apexes are r_S0 apart, as in the built-in benchmark
+      offset = rS0 - (m->coord(m->nodeSet("apex").front(), vertical) -
+                      m->coord(m->nodeSet("lower apex").front(), vertical));
+    }
+    if (m->nodeSets.count("fixed")) s.balance = ForceResponse{"fixed", vertical, 1.0};
+  } else {
+    s.forceScale = s.formulation == assembly::Formulation::PlaneStrain ? Y * R0 : Y * R0 * R0;
+  }
+  s.conditions = {{"driven", vertical, offset, -1.0}};
+  s.initialMotion = {{"driven body", vertical, offset, -1.0}};
+  s.load = {"driven", vertical, -1.0};  // P > 0: compressive
+  if (m->nodeSets.count("fixed"))
+    for (int i = 0; i < dim; ++i) s.conditions.push_back({"fixed", i, 0.0, 0.0});
+  if (m->nodeSets.count("axis")) s.conditions.push_back({"axis", 0, 0.0, 0.0});
+  for (int i = 0; i < dim; ++i) {
+    const std::string set = std::string("symmetry ") + "xyz"[i];
+    if (m->nodeSets.count(set)) s.conditions.push_back({set, i, 0.0, 0.0});
+  }
+  s.mesh = m;
+}
+
 }  // namespace
+
+void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath) {
+  if (!deck.isSublist("Geometry") || !deck.sublist("Geometry").isType<std::string>("File")) return;
+  const std::filesystem::path file = deck.sublist("Geometry").get<std::string>("File");
+  if (file.empty() || file.is_absolute()) return;
+  deck.sublist("Geometry").set("File", (std::filesystem::path(deckPath).parent_path() / file).lexically_normal().string());
+}
 
 ProblemSetup buildProblem(const ParameterList& deck) {
   ProblemSetup s;
@@ -340,7 +449,9 @@ ProblemSetup buildProblem(const ParameterList& deck) {
 
   const auto& geometry = deck.sublist("Geometry");
   const std::string type = geometry.get<std::string>("Type");
-  if (type != "block") {
+  if (type == "gmsh") {
+    buildFromGmsh(deck, s);
+  } else if (type != "block") {
     buildSphereContact(deck, s);
   } else {
     const auto& b = geometry.sublist("Block");

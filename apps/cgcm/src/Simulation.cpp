@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "cgcm/app/PathAnalysis.hpp"
+#include "cgcm/app/Results.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/ClosestPointSearch.hpp"
@@ -76,19 +77,22 @@ class ContactProbe {
 };
 
 // Turns converged states into load-curve rows: the force responses, the CSV
-// row (flushed, so a run that stops leaves a valid file) and a progress line.
+// row (flushed, so a run that stops leaves a valid file), the Exodus step and
+// a progress line.
 class Recorder {
  public:
-  Recorder(const ProblemSetup& setup, solver::ModelEvaluator& model, const ContactProbe* probe,
-           const std::string& path, int parameterIndex, bool root, bool print, std::ostream& log)
-      : setup_(setup), model_(model), probe_(probe), parameterIndex_(parameterIndex), root_(root), print_(print),
-        log_(log), f_(model.map()) {
+  Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
+           bool exodus, int parameterIndex, bool print, std::ostream& log)
+      : setup_(setup), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
+        root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log), f_(disc.model->map()) {
     columns_ = {"step", "u"};
-    if (parameterIndex_ > 0) columns_.push_back(model.parameterNames()[parameterIndex_]);
+    if (parameterIndex_ > 0) columns_.push_back(model_.parameterNames()[parameterIndex_]);
     columns_.push_back("P");
-    if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius", "P_lower"});
+    if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius"});
+    if (setup_.balance) columns_.push_back("P_lower");
     columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
-    if (root_) csv_ = std::make_unique<io::CsvWriter>(path, columns_);
+    createOnRoot(*disc.dofs->comm(), [&] { csv_ = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns_); });
+    if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, setup.material, columns_);
   }
 
   /// Records the state x at parameters p; `row` carries step, flags and solver figures. Collective.
@@ -101,18 +105,21 @@ class Recorder {
     if (probe_) {
       row.gap = probe_->gap(x);
       row.contactRadius = probe_->contactRadius(x);
+    }
+    if (setup_.balance)
       row.Plower = setup_.balance->sign * model_.assembler().sumOverNodes(
                                               f_, setup_.mesh->nodeSet(setup_.balance->nodeSet),
                                               setup_.balance->component);
-    }
     curve.push_back(row);
-    if (!root_) return;
     std::vector<double> values{double(row.step), row.u};
     if (parameterIndex_ > 0) values.push_back(row.parameter);
     values.push_back(row.P);
-    if (probe_) values.insert(values.end(), {row.gap, row.contactRadius, row.Plower});
+    if (probe_) values.insert(values.end(), {row.gap, row.contactRadius});
+    if (setup_.balance) values.push_back(row.Plower);
     values.insert(values.end(), {double(row.newtonIterations), row.stable ? 1.0 : 0.0, row.fold ? 1.0 : 0.0,
                                  row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
+    if (results_) results_->write(x, values);
+    if (!root_) return;
     csv_->row(values);
     if (!print_) return;
     char line[300];
@@ -138,6 +145,7 @@ class Recorder {
   Vector f_;
   std::vector<std::string> columns_;
   std::unique_ptr<io::CsvWriter> csv_;
+  std::unique_ptr<ResultsWriter> results_;
 };
 
 // What the Loading sublist asks for, checked before any work.
@@ -220,15 +228,14 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (!step.isParameter("Max Step Size") && plan.parameter == "u") step.set("Max Step Size", plan.path.maxIncrement);
   }
 
-  if (root) {
-    try {
-      std::filesystem::create_directories(dir);
-    } catch (const std::filesystem::filesystem_error& e) {
-      throw InputError("Output/Directory = \"" + dir + "\": cannot create it (" + e.code().message() + ")");
-    }
+  createOnRoot(*comm, [&] {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+      throw InputError("Output/Directory = \"" + dir + "\": cannot create it (" +
+                       (ec ? ec.message() : "a file of that name exists") + ")");
     io::writeDeck(deck, dir + "/parameters.xml");
-  }
-  comm->barrier();
+  });
 
   const Discretization disc = discretize(comm, setup, linearSolver);
   const auto& assembler = disc.assembler;
@@ -259,7 +266,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   model->setLoad(plan.path.path.front());
   if (plan.arcLength || plan.parameter != "u") continuation.validate(u);  // LOCA reads its list: typos stop here
 
-  Recorder recorder(setup, *model, probe.get(), dir + "/load_curve.csv", parameterIndex, root, printSteps, log);
+  Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), parameterIndex, printSteps, log);
   RunResult result;
   int step = 0;
   bool stable = true;

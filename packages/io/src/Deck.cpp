@@ -149,7 +149,9 @@ void printHelp(std::ostream& out, const Teuchos::ParameterList& valid) {
 }
 
 void writeDeck(const Teuchos::ParameterList& deck, const std::string& path) {
-  Teuchos::writeParameterListToXmlFile(deck, path);
+  std::ofstream out(path);
+  if (out) Teuchos::writeParameterListToXmlOStream(deck, out);
+  if (!out || !out.flush()) throw InputError("cannot write \"" + path + "\"");
 }
 
 }  // namespace cgcm::io

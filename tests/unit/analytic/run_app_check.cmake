@@ -1,7 +1,7 @@
 # Runs the app once (or twice with PRE_ARGS) and checks its exit code and
 # output. Called by ctest as
 #   cmake -DAPP=<exe> -DARGS=<a|b|c> [-DPRE_ARGS=<a|b>] -DEXPECT_EXIT=<n>
-#         [-DEXPECT_STDOUT=<regex>] [-DEXPECT_STDERR=<regex>] -P run_app_check.cmake
+#         [-DEXPECT_STDOUT=<regex>] [-DEXPECT_STDERR=<regex>] [-DREJECT_STDOUT=<regex>] -P run_app_check.cmake
 # Arguments are separated by '|' (a ';' would be split by the ctest command line).
 foreach(var APP ARGS EXPECT_EXIT)
   if(NOT DEFINED ${var})
@@ -25,6 +25,9 @@ if(NOT rc STREQUAL "${EXPECT_EXIT}")
 endif()
 if(DEFINED EXPECT_STDOUT AND NOT out MATCHES "${EXPECT_STDOUT}")
   message(FATAL_ERROR "stdout does not match: ${EXPECT_STDOUT}")
+endif()
+if(DEFINED REJECT_STDOUT AND out MATCHES "${REJECT_STDOUT}")
+  message(FATAL_ERROR "stdout matches what it must not: ${REJECT_STDOUT}")
 endif()
 if(DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
   message(FATAL_ERROR "stderr does not match: ${EXPECT_STDERR}")

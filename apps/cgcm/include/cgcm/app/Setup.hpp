@@ -72,6 +72,10 @@ struct ProblemSetup {
 /// Every parameter a deck may hold, with defaults and documentation.
 Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 
+/// Makes a relative Geometry/File absolute, taking it from the folder of the
+/// deck file `deckPath` (before validation; nothing to do without one).
+void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath);
+
 /// Builds the problem a validated deck describes. Throws InputError for
 /// combinations that the validators alone cannot reject.
 ProblemSetup buildProblem(const Teuchos::ParameterList& deck);

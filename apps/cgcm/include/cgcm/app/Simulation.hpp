@@ -40,7 +40,8 @@ struct RunResult {
 };
 
 /// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,
-/// summary.txt, parameters.xml}; prints progress on rank 0 to `log`. Throws
+/// results.e (unless Output/Exodus is false), summary.txt, parameters.xml}; prints
+/// progress on rank 0 to `log`. Throws
 /// InputError for inconsistent input before any work; a run the solver stops
 /// returns completed = false with the reason. Collective.
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,

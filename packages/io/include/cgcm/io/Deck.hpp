@@ -28,7 +28,7 @@ void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& va
 /// Prints every parameter with its default, type and documentation.
 void printHelp(std::ostream& out, const Teuchos::ParameterList& valid);
 
-/// Writes a parameter list as XML.
+/// Writes a parameter list as XML. Throws InputError if the file cannot be written.
 void writeDeck(const Teuchos::ParameterList& deck, const std::string& path);
 
 }  // namespace cgcm::io

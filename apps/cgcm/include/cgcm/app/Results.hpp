@@ -1,0 +1,53 @@
+#pragma once
+// The Exodus II results of a run (results.e): one step per load-curve row.
+//
+// Fields: nodal displacement_x/_y(/_z); per element the Cauchy stress
+// averaged over its quadrature points (stress_rr, stress_zz, stress_tt,
+// stress_rz in axisymmetry; stress_xx, stress_yy, stress_zz, stress_xy in
+// plane strain; the six components in 3D), J and von_mises; with an
+// interaction the nodal interaction traction (traction_x/_y: the interaction
+// force on a surface node over its current tributary area, ring area in
+// axisymmetry) and its normal part, pressure (> 0 pushing into the body,
+// < 0 adhesive), 0 off the interacting surfaces; the load-curve columns as
+// global variables. The state is gathered to rank 0, which evaluates the
+// fields on its copy of the mesh and writes the file.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cgcm/app/Setup.hpp"
+#include "cgcm/io/ExodusWriter.hpp"
+
+namespace cgcm::app {
+
+/// Runs `create` (which writes files) on rank 0 only; an InputError there is
+/// thrown on every rank, with its message. Collective.
+void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& create);
+
+class ResultsWriter {
+ public:
+  /// Creates `path` on rank 0 with the mesh of `disc` and the global
+  /// variables `globals`. Throws InputError (rank 0) if it cannot be created. Collective.
+  ResultsWriter(const std::string& path, const Discretization& disc, const material::NeoHookean& material,
+                const std::vector<std::string>& globals);
+
+  /// Appends the state x with the globals' values (in the constructor's
+  /// order) as step time = number of the step, flushed. Collective.
+  void write(const assembly::Vector& x, const std::vector<double>& globals);
+
+ private:
+  void displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
+                             io::ExodusWriter::Fields& element) const;
+  void traction(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal) const;
+
+  const Discretization& disc_;
+  material::NeoHookean material_;
+  std::vector<std::string> globals_;
+  bool root_;
+  Teuchos::RCP<const assembly::Import> gather_;
+  Teuchos::RCP<assembly::Vector> all_;
+  std::unique_ptr<io::ExodusWriter> writer_;
+};
+
+}  // namespace cgcm::app

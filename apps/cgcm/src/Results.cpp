@@ -1,0 +1,188 @@
+#include "cgcm/app/Results.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/fem/SolidKernel.hpp"
+
+namespace cgcm::app {
+
+namespace {
+
+const char* const kDisplacement[] = {"displacement_x", "displacement_y", "displacement_z"};
+
+// Stress components written per formulation, as (name, i, j) of the 3x3 Cauchy stress.
+struct Component {
+  const char* name;
+  int i, j;
+};
+std::vector<Component> stressComponents(assembly::Formulation f) {
+  switch (f) {
+    case assembly::Formulation::Axisymmetric:
+      return {{"stress_rr", 0, 0}, {"stress_zz", 1, 1}, {"stress_tt", 2, 2}, {"stress_rz", 0, 1}};
+    case assembly::Formulation::PlaneStrain:
+      return {{"stress_xx", 0, 0}, {"stress_yy", 1, 1}, {"stress_zz", 2, 2}, {"stress_xy", 0, 1}};
+    case assembly::Formulation::ThreeD:
+      break;
+  }
+  return {{"stress_xx", 0, 0}, {"stress_yy", 1, 1}, {"stress_zz", 2, 2},
+          {"stress_xy", 0, 1}, {"stress_yz", 1, 2}, {"stress_xz", 0, 2}};
+}
+
+Real vonMises(const Mat3& s) {
+  const Real d = (s.a[0][0] - s.a[1][1]) * (s.a[0][0] - s.a[1][1]) + (s.a[1][1] - s.a[2][2]) * (s.a[1][1] - s.a[2][2]) +
+                 (s.a[2][2] - s.a[0][0]) * (s.a[2][2] - s.a[0][0]);
+  const Real t = s.a[0][1] * s.a[0][1] + s.a[1][2] * s.a[1][2] + s.a[0][2] * s.a[0][2];
+  return std::sqrt(0.5 * d + 3.0 * t);
+}
+
+// Mean Cauchy stress and J of one cell with the kernel of its (formulation, element); false if inverted.
+template <class Kernel>
+bool cellStress(const mesh::Mesh& m, const LocalIndex* nodes, const std::vector<Real>& u,
+                const material::NeoHookean& mat, Mat3& sigma, Real& J) {
+  Real X[Kernel::numNodes][Kernel::dim], x[Kernel::numNodes][Kernel::dim];
+  for (int a = 0; a < Kernel::numNodes; ++a)
+    for (int i = 0; i < Kernel::dim; ++i) {
+      X[a][i] = m.coord(nodes[a], i);
+      x[a][i] = X[a][i] + u[std::size_t(nodes[a]) * Kernel::dim + i];
+    }
+  return Kernel::averageStress(X, x, mat, sigma, J);
+}
+
+}  // namespace
+
+void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& create) {
+  std::string error;
+  if (comm.getRank() == 0) try {
+      create();
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  int size = int(error.size());
+  Teuchos::broadcast(comm, 0, &size);
+  if (size == 0) return;
+  error.resize(std::size_t(size));
+  Teuchos::broadcast(comm, 0, size, error.data());
+  throw InputError(error);
+}
+
+ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc,
+                             const material::NeoHookean& material, const std::vector<std::string>& globals)
+    : disc_(disc), material_(material), globals_(globals), root_(disc.dofs->comm()->getRank() == 0) {
+  const auto& mesh = disc.assembler->mesh();
+  const auto owned = disc.dofs->ownedMap();
+  std::vector<GlobalIndex> gids;
+  if (root_)
+    for (GlobalIndex g = 0; g < GlobalIndex(owned->getGlobalNumElements()); ++g) gids.push_back(g);
+  const auto rootMap = Teuchos::rcp(new assembly::Map(owned->getGlobalNumElements(), gids.data(), gids.size(), 0,
+                                                      disc.dofs->comm()));
+  gather_ = Teuchos::rcp(new assembly::Import(owned, rootMap));
+  all_ = Teuchos::rcp(new assembly::Vector(rootMap));
+  io::ExodusVariables vars;
+  for (int i = 0; i < mesh.dim; ++i) vars.nodal.push_back(kDisplacement[i]);
+  if (disc.interaction) vars.nodal.insert(vars.nodal.end(), {"traction_x", "traction_y", "pressure"});
+  for (const auto& c : stressComponents(disc.assembler->formulation())) vars.element.push_back(c.name);
+  vars.element.insert(vars.element.end(), {"J", "von_mises"});
+  vars.global = globals;
+  createOnRoot(*disc.dofs->comm(), [&] { writer_ = std::make_unique<io::ExodusWriter>(path, "cgcm", mesh, vars); });
+}
+
+void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
+  all_->doImport(x, *gather_, Tpetra::INSERT);
+  if (!root_) return;
+  const auto v = all_->getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<Real> u(v.extent(0));
+  for (std::size_t k = 0; k < u.size(); ++k) u[k] = v(k, 0);  // dof = node * dim + i: the gids are 0 .. n - 1
+  io::ExodusWriter::Fields nodal, element;
+  displacementAndStress(u, nodal, element);
+  if (disc_.interaction) traction(u, nodal);
+  io::ExodusWriter::Scalars scalars;
+  for (std::size_t k = 0; k < globals_.size(); ++k) scalars[globals_[k]] = globals[k];
+  writer_->writeStep(writer_->numSteps() + 1, nodal, element, scalars);
+}
+
+void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
+                                          io::ExodusWriter::Fields& element) const {
+  const auto& mesh = disc_.assembler->mesh();
+  const int dim = mesh.dim;
+  for (int i = 0; i < dim; ++i) {
+    auto& d = nodal[kDisplacement[i]];
+    d.resize(mesh.numNodes());
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n) d[n] = u[std::size_t(n) * dim + i];
+  }
+  const auto components = stressComponents(disc_.assembler->formulation());
+  const auto& material = material_;
+  std::vector<std::vector<double>*> out;
+  for (const auto& c : components) out.push_back(&element[c.name]);
+  out.push_back(&element["J"]);
+  out.push_back(&element["von_mises"]);
+  for (auto* o : out) o->reserve(mesh.numCells());
+  using namespace fem;
+  for (const auto& b : mesh.blocks) {
+    const int npc = mesh::nodesPerCell(b.type);
+    for (LocalIndex c = 0; c < b.numCells(); ++c) {
+      const LocalIndex* nodes = &b.connectivity[std::size_t(c) * npc];
+      Mat3 s;
+      Real J = 0.0;
+      bool ok = false;
+      switch (disc_.assembler->formulation()) {
+        case assembly::Formulation::PlaneStrain: ok = cellStress<PlaneStrainQuad4>(mesh, nodes, u, material, s, J); break;
+        case assembly::Formulation::Axisymmetric: ok = cellStress<AxisymmetricQuad4>(mesh, nodes, u, material, s, J); break;
+        case assembly::Formulation::ThreeD:
+          ok = b.type == mesh::CellType::Hex8 ? cellStress<ThreeDHex8>(mesh, nodes, u, material, s, J)
+                                              : cellStress<ThreeDTet4>(mesh, nodes, u, material, s, J);
+          break;
+      }
+      const Real nan = std::numeric_limits<Real>::quiet_NaN();  // an inverted cell: no stress
+      for (std::size_t k = 0; k < components.size(); ++k) out[k]->push_back(ok ? s.a[components[k].i][components[k].j] : nan);
+      out[components.size()]->push_back(ok ? J : nan);
+      out[components.size() + 1]->push_back(ok ? vonMises(s) : nan);
+    }
+  }
+}
+
+void ResultsWriter::traction(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal) const {
+  // The pair list is the one of the last evaluation, at this state.
+  const auto& mesh = disc_.assembler->mesh();
+  const auto& in = *disc_.interaction;
+  const LocalIndex nn = mesh.numNodes();
+  std::vector<Real> x(mesh.coords);
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] += u[k];
+  std::vector<Real> force(2 * std::size_t(nn), 0.0), area(nn, 0.0), normal(2 * std::size_t(nn), 0.0);
+  interaction::PairContribution c;
+  for (const auto& p : in.pairs()) {
+    in.evaluatePair(x.data(), p, c, false);
+    for (int a = 0; a < 2; ++a)
+      for (int i = 0; i < 2; ++i) force[2 * std::size_t(c.rowNodes[a]) + i] -= c.f[2 * a + i];  // on the body: -f_C
+  }
+  const bool axisymmetric = disc_.assembler->formulation() == assembly::Formulation::Axisymmetric;
+  for (int b = 0; b < in.numBodies(); ++b) {
+    const auto& s = in.surface(b);
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      const LocalIndex n0 = s.facets[2 * std::size_t(f)], n1 = s.facets[2 * std::size_t(f) + 1];
+      const Real tx = x[2 * n1] - x[2 * n0], ty = x[2 * n1 + 1] - x[2 * n0 + 1];
+      const Real length = std::hypot(tx, ty);
+      // share of each node: integral of N_a (times 2 pi r in axisymmetry)
+      const Real a0 = axisymmetric ? 2.0 * M_PI * length * (2.0 * x[2 * n0] + x[2 * n1]) / 6.0 : 0.5 * length;
+      const Real a1 = axisymmetric ? 2.0 * M_PI * length * (x[2 * n0] + 2.0 * x[2 * n1]) / 6.0 : 0.5 * length;
+      area[n0] += a0, area[n1] += a1;
+      for (LocalIndex n : {n0, n1}) normal[2 * n] += ty, normal[2 * n + 1] -= tx;  // outward, length-weighted
+    }
+  }
+  auto& tx = nodal["traction_x"];
+  auto& ty = nodal["traction_y"];
+  auto& pressure = nodal["pressure"];
+  tx.assign(nn, 0.0), ty.assign(nn, 0.0), pressure.assign(nn, 0.0);
+  for (LocalIndex n = 0; n < nn; ++n) {
+    if (!(area[n] > 0.0)) continue;
+    tx[n] = force[2 * n] / area[n];
+    ty[n] = force[2 * n + 1] / area[n];
+    const Real len = std::hypot(normal[2 * n], normal[2 * n + 1]);
+    if (len > 0.0) pressure[n] = -(tx[n] * normal[2 * n] + ty[n] * normal[2 * n + 1]) / len;
+  }
+}
+
+}  // namespace cgcm::app

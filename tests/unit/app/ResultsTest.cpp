@@ -1,0 +1,150 @@
+// results.e of a run read back (ExodusReader): element blocks, variable
+// names, one step per load-curve row with the row's values, and the fields
+// against the homogeneous solution of uniaxial compression; on the sphere
+// benchmark the interaction traction where the bodies touch.
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "ClosedForm.hpp"
+#include "cgcm/app/Setup.hpp"
+#include "cgcm/app/Simulation.hpp"
+#include "cgcm/io/Deck.hpp"
+#include "cgcm/io/ExodusReader.hpp"
+
+namespace cgcm {
+namespace {
+
+Teuchos::RCP<Teuchos::ParameterList> deck(const std::vector<std::string>& overrides) {
+  auto d = Teuchos::rcp(new Teuchos::ParameterList("cgcm"));
+  io::applyOverrides(*d, *app::validParameters(), overrides);
+  io::validateDeck(*d, *app::validParameters());
+  return d;
+}
+
+std::vector<std::string> csvHeader(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, name;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for (std::stringstream s(line); std::getline(s, name, ',');) names.push_back(name);
+  return names;
+}
+
+double global(const io::ExodusReader& r, const std::string& name, int step) {
+  const auto& names = r.globalNames();
+  return r.globals(step).at(std::size_t(std::find(names.begin(), names.end(), name) - names.begin()));
+}
+
+TEST(Results, UniaxialCompressionFieldsAreTheHomogeneousSolution) {
+  struct Case {
+    std::string formulation, type;
+    std::vector<std::string> stresses;
+    int lateral;  // free lateral directions
+  };
+  const Case cases[] = {
+      {"plane strain", "QUAD4", {"stress_xx", "stress_yy", "stress_zz", "stress_xy"}, 1},
+      {"axisymmetric", "QUAD4", {"stress_rr", "stress_zz", "stress_tt", "stress_rz"}, 2},
+      {"3D", "HEX8", {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz"}, 2}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.formulation);
+    const std::string dir = std::string(CGCM_TEST_OUTPUT) + "/results-" + c.formulation;
+    auto d = deck({"Problem/Formulation=" + c.formulation, "Geometry/Type=block", "Geometry/Block/Cells X=2",
+                   "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=2", "Material/Poisson's Ratio=0.3",
+                   "Loading/Approach Path={0, -0.3}", "Loading/Initial Increment=0.1", "Loading/Max Increment=0.1",
+                   "Output/Print Steps=false", "Output/Directory=" + dir});
+    std::ostringstream log;
+    const auto run = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
+    ASSERT_TRUE(run.completed) << run.failure;
+    if (Tpetra::getDefaultComm()->getRank() != 0) continue;
+
+    const io::ExodusReader r(dir + "/results.e");
+    const auto setup = app::buildProblem(*d);
+    const auto& mesh = *setup.mesh;
+    const int dim = mesh.dim, axis = dim - 1;
+    ASSERT_EQ(r.blocks().size(), 1u);
+    EXPECT_EQ(r.blocks()[0].name, "block");
+    EXPECT_EQ(r.blocks()[0].type, c.type);
+    EXPECT_EQ(r.numNodes(), mesh.numNodes());
+    std::vector<std::string> nodal{"displacement_x", "displacement_y", "displacement_z"};
+    nodal.resize(std::size_t(dim));
+    EXPECT_EQ(r.nodalNames(), nodal);
+    auto element = c.stresses;
+    element.insert(element.end(), {"J", "von_mises"});
+    EXPECT_EQ(r.elementNames(), element);
+    EXPECT_EQ(r.globalNames(), csvHeader(dir + "/load_curve.csv"));
+    ASSERT_EQ(r.numSteps(), int(run.curve.size()));
+
+    for (int s = 1; s <= r.numSteps(); ++s) {
+      const auto& row = run.curve[std::size_t(s - 1)];
+      EXPECT_EQ(r.times()[std::size_t(s - 1)], s);
+      EXPECT_EQ(global(r, "u", s), row.u);
+      EXPECT_EQ(global(r, "P", s), row.P);
+      // homogeneous: u_axis = u X_axis / L, u_lateral = (lateral stretch - 1) X
+      double lateral = 1.0;
+      const double sigma = test::uniaxialCauchyStress(setup.material, 1.0 + row.u, c.lateral, lateral);
+      for (int i = 0; i < dim; ++i) {
+        const auto u = r.nodal(nodal[std::size_t(i)], s);
+        const bool loaded = i == axis;
+        const bool free = !loaded && (c.formulation != "plane strain" || i == 0);
+        for (LocalIndex n = 0; n < mesh.numNodes(); ++n) {
+          const double expected = loaded ? row.u * mesh.coord(n, i) : (free ? (lateral - 1.0) : 0.0) * mesh.coord(n, i);
+          ASSERT_NEAR(u[std::size_t(n)], expected, 1e-9) << nodal[std::size_t(i)] << " node " << n << " step " << s;
+        }
+      }
+      const auto axial = r.element(c.formulation == "plane strain" ? "stress_yy" : "stress_zz", s);
+      const auto J = r.element("J", s), mises = r.element("von_mises", s);
+      const double expectedJ = (1.0 + row.u) * std::pow(lateral, c.lateral);
+      for (std::size_t e = 0; e < J.size(); ++e) {
+        EXPECT_NEAR(axial[e], sigma, 1e-9);
+        EXPECT_NEAR(J[e], expectedJ, 1e-12);
+        if (c.formulation != "plane strain") {
+          EXPECT_NEAR(mises[e], std::abs(sigma), 1e-9);  // uniaxial stress
+        }
+      }
+    }
+  }
+}
+
+TEST(Results, InteractionTractionPressesWhereTheBodiesTouch) {
+  const std::string dir = std::string(CGCM_TEST_OUTPUT) + "/results-sphere";
+  auto d = io::readDeck(CGCM_DECK);
+  io::applyOverrides(*d, *app::validParameters(),
+                     {"Loading/Approach Path={-0.005, 0.02}", "Loading/Initial Increment=0.005",
+                      "Loading/Max Increment=0.005", "Output/Print Steps=false", "Output/Directory=" + dir});
+  io::validateDeck(*d, *app::validParameters());
+  std::ostringstream log;
+  const auto run = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
+  ASSERT_TRUE(run.completed) << run.failure;
+  if (Tpetra::getDefaultComm()->getRank() != 0) return;
+  ASSERT_GT(run.curve.back().P, 0.0);  // compressed at the end
+
+  const io::ExodusReader r(dir + "/results.e");
+  ASSERT_EQ(r.blocks().size(), 2u);
+  EXPECT_EQ(r.blocks()[0].name, "sphere");
+  EXPECT_EQ(r.blocks()[1].name, "half-space");
+  ASSERT_EQ(r.sideSets().size(), 2u);
+  EXPECT_EQ(r.sideSets()[0].name, "contact:sphere");
+  EXPECT_EQ(r.nodalNames(),
+            (std::vector<std::string>{"displacement_x", "displacement_y", "traction_x", "traction_y", "pressure"}));
+  const auto mesh = app::buildProblem(*d).mesh;
+  const int last = r.numSteps();
+  const auto p = r.nodal("pressure", last), ty = r.nodal("traction_y", last);
+  const LocalIndex apex = mesh->nodeSet("apex").front(), lowerApex = mesh->nodeSet("lower apex").front();
+  EXPECT_GT(p[std::size_t(apex)], 0.0);
+  EXPECT_GT(p[std::size_t(lowerApex)], 0.0);
+  EXPECT_GT(ty[std::size_t(apex)], 0.0);        // the sphere is pushed up
+  EXPECT_LT(ty[std::size_t(lowerApex)], 0.0);   // the half-space down
+  for (LocalIndex n : mesh->nodeSet("lower bottom")) EXPECT_EQ(p[std::size_t(n)], 0.0);  // off the surfaces
+  // the displacement of the driven equator is -u (the sphere's equator plane moves down by u)
+  const auto uy = r.nodal("displacement_y", last);
+  for (LocalIndex n : mesh->nodeSet("equator")) EXPECT_NEAR(uy[std::size_t(n)], -run.curve.back().u, 1e-14);
+}
+
+}  // namespace
+}  // namespace cgcm
