@@ -19,6 +19,7 @@ build: configure
 
 demo: build
 	$(BUILD_DIR)/bin/cgcm $(DECK) Output/Directory=$(OUTPUT)
+	/usr/bin/python3 tools/plot_load_curves.py --output $(OUTPUT)/load_curve.png $(OUTPUT)/load_curve.csv
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)

@@ -20,7 +20,7 @@ packages=(
   # Boost.Math (root finding in the fold location)
   libboost-dev
   # tests and plots
-  googletest libgtest-dev python3 python3-numpy python3-matplotlib
+  googletest libgtest-dev python3 python3-numpy python3-matplotlib python3-netcdf4
 )
 
 missing=()

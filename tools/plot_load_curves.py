@@ -27,23 +27,36 @@ def read(path):
 
 def draw(ax, c, y, **kw):
     """Plots y(u) with the stable parts solid and the unstable ones dashed
-    (a segment is unstable when either end is); folds are marked."""
+    (a segment is unstable when either end is); folds are marked, and each
+    jump (displacement control) is an arrow from its fold row to the landing
+    row instead of a line."""
     u, stable = c["u"], c.get("stable", [1.0] * len(c["u"]))
+    jump = c.get("jump", [0.0] * len(u))
     color = kw.pop("color", None)
     label = kw.pop("label", None)
-    start = 0
-    for k in range(1, len(u) + 1):
-        seg_unstable = k < len(u) and (stable[k] == 0 or stable[k - 1] == 0)
-        run_unstable = stable[start] == 0 or (start + 1 < len(u) and stable[start + 1] == 0)
-        if k == len(u) or seg_unstable != run_unstable:
-            end = k if k < len(u) else k - 1
-            line, = ax.plot(u[start:end + 1], y[start:end + 1], ls="--" if run_unstable else "-", color=color,
-                            label=label, **kw)
-            color, label = line.get_color(), None
-            start = end
+    starts = [0] + [k for k in range(1, len(u)) if jump[k] > 0] + [len(u)]
+    for first, stop in zip(starts, starts[1:]):
+        start = first
+        for k in range(first + 1, stop + 1):
+            seg_unstable = k < stop and (stable[k] == 0 or stable[k - 1] == 0)
+            run_unstable = stable[start] == 0 or (start + 1 < stop and stable[start + 1] == 0)
+            if k == stop or seg_unstable != run_unstable:
+                end = k if k < stop else k - 1
+                line, = ax.plot(u[start:end + 1], y[start:end + 1], ls="--" if run_unstable else "-", color=color,
+                                label=label, **kw)
+                color, label = line.get_color(), None
+                start = end
     for k, f in enumerate(c.get("fold", [])):
         if f > 0:
             ax.plot(u[k], y[k], "o", ms=3.5, mfc="none", color=color)
+    fold = None
+    for k in range(len(u)):
+        if c.get("fold", [0.0] * len(u))[k] > 0:
+            fold = k
+        if jump[k] > 0 and fold is not None:
+            ax.annotate("", xy=(u[k], y[k]), xytext=(u[fold], y[fold]),
+                        arrowprops=dict(arrowstyle="->", color=color, lw=1.0, shrinkA=2, shrinkB=2))
+            fold = None
     return color
 
 
