@@ -397,6 +397,8 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
   const Real R0 = g.get<double>("Sphere Radius"), Y = s.material.youngsModulus();
   Real offset = 0.0;
   if (m->numBodies > 1) {
+    if (dim == 3)
+      fail("the interaction between bodies is 2D so far (plane strain, axisymmetric); a 3D mesh has one body");
     s.interaction = buildInteraction(deck.sublist("Interaction"), R0, Y, s.material.poissonRatio(), R0,
                                      s.formulation, s.report, s.forceScale);
     s.interaction->densities.assign(m->numBodies, s.interaction->densities.front());
