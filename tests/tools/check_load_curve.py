@@ -23,6 +23,9 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       --stopped, "stopped: ...")
   agree   A.csv B.csv --at U [U ...] [--tolerance REL] [--abs ABS]
       P of the last row at each u = U agrees between the two curves
+  returns CSV --u U [--abs ABS]
+      a there-and-back continuation at u = U: the last row comes back to the
+      first row at u = U, |P_last - P_first| <= ABS, and P moved on the way
   foldsmatch ARC.csv DISP.csv [--tolerance T]
       the folds of an arc-length curve that end stable branches are where the
       displacement-controlled curve jumps (fold rows of both at the same u within T)
@@ -157,6 +160,15 @@ def foldsmatch(a):
     return 0 if worst <= a.tolerance else 1
 
 
+def returns(c, a):
+    first = next(k for k, v in enumerate(c["u"]) if abs(v - a.u) <= 1e-12 * max(1.0, abs(v)))
+    changed = max(abs(p - c["P"][first]) for p in c["P"][first:])
+    diff = abs(c["P"][-1] - c["P"][first])
+    print(f"P at the start (u = {a.u:g}, row {first}) {c['P'][first]:.12g}, at the end "
+          f"{c['P'][-1]:.12g}: difference {diff:.3g} (tolerance {a.abs:.3g}); largest change on the way {changed:.3g}")
+    return 0 if diff <= a.abs and changed > 100 * a.abs else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -200,6 +212,10 @@ def main():
     ag.add_argument("--at", type=float, nargs="+", required=True)
     ag.add_argument("--tolerance", type=float, default=1e-6)
     ag.add_argument("--abs", type=float, default=0.0)
+    rt = sub.add_parser("returns")
+    rt.add_argument("csv")
+    rt.add_argument("--u", type=float, required=True)
+    rt.add_argument("--abs", type=float, default=2e-10)
     fm = sub.add_parser("foldsmatch")
     fm.add_argument("csv")
     fm.add_argument("other")
@@ -211,7 +227,7 @@ def main():
         return foldsmatch(a)
     c = read(a.csv)
     return {"hertz": hertz, "pulloff": pulloff, "value": value, "balance": balance, "jumps": jumps, "folds": folds,
-            "converged": converged}[a.cmd](c, a)
+            "converged": converged, "returns": returns}[a.cmd](c, a)
 
 
 if __name__ == "__main__":

@@ -95,13 +95,14 @@ class PathStepper : public LOCA::Stepper {
     }
     const int iterations = solverPtr->getNumIterations();
     const Real residual = residualNorm(solverPtr->getSolutionGroup());
-    if (!atCorner() && correctorWentFar()) {
+    const bool guard = !atCorner();
+    if (guard && correctorWentFar()) {
       ++state_.result->failedSteps;
       return LOCA::Stepper::postprocess(Iterator::Unsuccessful);
     }
     const auto status = LOCA::Stepper::postprocess(stepStatus);
     if (status == Iterator::Unsuccessful) return status;
-    if (!atCorner() && turnCosine() < kMinTurnCosine) {
+    if (guard && turnCosine() < kMinTurnCosine) {
       ++state_.result->failedSteps;  // the retry starts from the last point's tangent (preprocess)
       return Iterator::Unsuccessful;
     }
@@ -112,8 +113,9 @@ class PathStepper : public LOCA::Stepper {
     pt.dpds = dB;
     pt.iterations = iterations;
     pt.residual = residual;
-    if (dA * dB < 0.0 && !locateFold(dA, dB)) {
-      // The fold could not be located between A and B: B stands for it.
+    const bool locate = !state_.segment->landOnly || state_.result->folds.empty();
+    if (dA * dB < 0.0 && (!locate || !locateFold(dA, dB))) {
+      // The fold was not located (or could not be) between A and B: B stands for it.
       pt.fold = true;
       state_.result->folds.push_back(pt);
       state_.stable = !state_.stable;

@@ -87,6 +87,7 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
   segment.bound = p - segment.direction * range;
   segment.initialStep = std::abs(pNew - p);
   segment.stableStart = true;
+  segment.landOnly = true;
   model_->setLoad(p);
   bool first = true;
   const auto result = continuation_->run(u, segment, [&](const PathPoint& pt) {

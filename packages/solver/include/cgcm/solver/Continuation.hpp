@@ -48,6 +48,9 @@ struct ContinuationSegment {
   Real bound = 0.0;         ///< the other side: the run stops as failed if the parameter gets beyond it
   Real initialStep = 1e-3;  ///< size of the first parameter increment (> 0)
   bool stableStart = true;  ///< stability of the start point
+  /// Only the end matters (a jump under displacement control): the first fold
+  /// is located, later ones only counted.
+  bool landOnly = false;
 };
 
 struct ContinuationResult {
