@@ -14,9 +14,11 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
   jumps   CSV --expected N [--contact-gap G]
       exactly N states marked as jumps; with --contact-gap, the first jump lands
       in contact (gap < G) and the last one out of it (gap > G)
-  folds   CSV --expected N [--unstable]
+  folds   CSV --expected N [--unstable] [--contact-gap G]
       exactly N fold rows; with --unstable, unstable rows (stable = 0) lie
-      between consecutive folds and nowhere else
+      between consecutive folds and nowhere else; with --contact-gap, the
+      state after the first fold is in contact (gap < G) and the one after
+      the last fold out of it (gap > G)
   converged CSV --tolerance T [--summary SUMMARY --stopped]
       every row's residual is <= T (the absolute force tolerance the run
       printed); with --summary, its first line says "completed" (or, with
@@ -103,6 +105,11 @@ def folds(c, a):
     idx = [k for k, f in enumerate(c["fold"]) if f > 0]
     print("folds at u = " + ", ".join(f"{c['u'][k]:.9g} (P {c['P'][k]:.6g})" for k in idx))
     ok = len(idx) == a.expected
+    if ok and a.contact_gap is not None and idx:
+        # displacement control: the state after the first fold is in contact, the one after the last is not
+        after = [c["gap"][k + 1] for k in (idx[0], idx[-1]) if k + 1 < len(c["gap"])]
+        print("gap after the first and the last fold: " + ", ".join(f"{g:.4g}" for g in after))
+        ok = len(after) == 2 and after[0] < a.contact_gap < after[1]
     if ok and a.unstable:
         for k, s in enumerate(c["stable"]):
             inside = sum(1 for f in idx if f < k) % 2 == 1
@@ -201,6 +208,7 @@ def main():
     f.add_argument("csv")
     f.add_argument("--expected", type=int, required=True)
     f.add_argument("--unstable", action="store_true")
+    f.add_argument("--contact-gap", type=float)
     cv = sub.add_parser("converged")
     cv.add_argument("csv")
     cv.add_argument("--tolerance", type=float, required=True)

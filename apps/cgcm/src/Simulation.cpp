@@ -161,6 +161,9 @@ PathPlan planPath(const Teuchos::ParameterList& loading, const ProblemSetup& set
   PathPlan plan;
   plan.arcLength = loading.get<std::string>("Control") == "arc-length";
   plan.path = solver::LoadPathSettings::fromParameters(loading);
+  // A jump relaxes in moves of at most a quarter of the interaction length, so that
+  // no iterate skips the equilibrium spacing or pushes a surface through another.
+  if (setup.interaction) plan.path.relaxation.maxIncrement = 0.25 * setup.interaction->potential->r0();
   plan.parameter = loading.get<std::string>("Continuation Parameter");
   const auto& pp = loading.get<Teuchos::Array<double>>("Parameter Path");
   plan.parameterPath.assign(pp.begin(), pp.end());

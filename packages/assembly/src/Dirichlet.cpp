@@ -34,6 +34,11 @@ void DirichletConditions::impose(Real p, Vector& u) const {
   for (std::size_t k = 0; k < lids_.size(); ++k) uv(lids_[k], 0) = offset_[k] + scale_[k] * p;
 }
 
+void DirichletConditions::zeroConstrained(Vector& v) const {
+  auto vv = v.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (LocalIndex lid : lids_) vv(lid, 0) = 0.0;
+}
+
 void DirichletConditions::residualParameterDerivative(Vector& dfdp) const {
   dfdp.putScalar(0.0);
   auto v = dfdp.getLocalViewHost(Tpetra::Access::ReadWrite);

@@ -54,6 +54,7 @@ struct Continuation::RunState {
   bool widen = false;         ///< ... wider than the search radius (an evaluation met missing entries)
   Real lastDpds = 0.0;        ///< dp/ds at the last converged point
   Real lastStepSize = 0.0;    ///< arclength of the last step (signed)
+  bool atFold = false;        ///< a fold was located and the segment stops there
   bool haveLast = false;
 };
 
@@ -121,6 +122,11 @@ class PathStepper : public LOCA::Stepper {
       state_.stable = !state_.stable;
     }
     pt.stable = pt.fold || state_.stable;
+    if (state_.segment->stopAtFold && !state_.result->folds.empty()) {
+      if (pt.fold) report(pt);  // B stands for a fold that was not located
+      state_.atFold = true;
+      return status;
+    }
     report(pt);
     state_.lastDpds = dB;
     state_.lastStepSize = stepSize;
@@ -136,6 +142,7 @@ class PathStepper : public LOCA::Stepper {
       owner_.model_->clearGraphOutdated();
     }
     if (state_.restart) return Iterator::Failed;
+    if (state_.atFold) return Iterator::Finished;
     // The target: reached when the parameter gets to it moving away from the
     // start (after any folds). LOCA's own bound logic assumes a monotonic
     // parameter and declares the bound reached next to a fold that lies just
@@ -154,6 +161,7 @@ class PathStepper : public LOCA::Stepper {
   }
 
   Iterator::IteratorStatus finish(Iterator::IteratorStatus status) override {
+    if (state_.atFold) return Iterator::Finished;  // no step to a bound: the fold is the end
     const auto result = LOCA::Stepper::finish(status);
     if (result == Iterator::Finished && isTargetStep) {
       // The natural step that lands on the bound: same branch as the last point.
@@ -452,7 +460,9 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
     }
     const Real reachedValue = result.last.p[segment.parameter];
     const Real scale = std::abs(segment.target) + std::abs(segment.bound) + 1e-300;
-    if (status == Iterator::Finished && std::abs(reachedValue - segment.target) <= 1e-12 * scale) {
+    if (state.atFold) {
+      result.stoppedAtFold = true;
+    } else if (status == Iterator::Finished && std::abs(reachedValue - segment.target) <= 1e-12 * scale) {
       result.reached = true;
     } else if (result.failure.empty()) {
       std::ostringstream msg;

@@ -7,7 +7,9 @@
 #include <NOX_StatusTest_FiniteValue.H>
 #include <NOX_StatusTest_MaxIters.H>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ostream>
 
 namespace cgcm::solver {
@@ -42,11 +44,35 @@ std::ostream& ResidualNormTest::print(std::ostream& stream, int indent) const {
   return stream << status_ << "|f|_2 = " << norm_ << " <= " << tolerance_ << " (force units)\n";
 }
 
+NOX::StatusTest::StatusType ProgressTest::checkStatus(const NOX::Solver::Generic& solver,
+                                                      NOX::StatusTest::CheckType type) {
+  const int k = solver.getNumIterations();
+  if (k == 0) history_.clear();
+  if (type == NOX::StatusTest::None) {
+    status_ = NOX::StatusTest::Unevaluated;
+    return status_;
+  }
+  history_.resize(k + 1, std::numeric_limits<Real>::infinity());
+  history_[k] = residualNorm(solver.getSolutionGroup());
+  status_ = NOX::StatusTest::Unconverged;
+  if (k >= window_) {
+    const Real earlier = *std::min_element(history_.begin(), history_.begin() + (k - window_ + 1));
+    if (history_[k] > earlier) status_ = NOX::StatusTest::Failed;
+  }
+  return status_;
+}
+
+std::ostream& ProgressTest::print(std::ostream& stream, int indent) const {
+  for (int i = 0; i < indent; ++i) stream << ' ';
+  return stream << status_ << "progress: |f| below its value " << window_ << " iterations earlier\n";
+}
+
 Teuchos::RCP<NOX::StatusTest::Generic> convergenceTests(Real tolerance, int maxIterations) {
   using namespace NOX::StatusTest;
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(Teuchos::rcp(new ResidualNormTest(tolerance)));
+  tests->addStatusTest(Teuchos::rcp(new ProgressTest));
   tests->addStatusTest(Teuchos::rcp(new MaxIters(maxIterations)));
   return tests;
 }

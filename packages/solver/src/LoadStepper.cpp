@@ -35,12 +35,24 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
   auto cut = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.01, 0.99));
   valid->set("Cutback Factor", 0.5, "increment reduction after a failed step (0.01 .. 0.99)", cut);
   auto cutbacks = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 50));
-  valid->set("Cutbacks Before Continuation", 2,
-             "displacement control: a step that still fails after this many cut-backs hands over to arc-length "
-             "continuation, which goes to the step's u along the path: through a fold (jump-to-contact, "
-             "jump-off-contact) it locates the fold, follows the unstable branch and lands on the far stable "
-             "branch at the same u (the jump); without one it simply arrives (0 .. 50)",
+  valid->set("Cutbacks Before Jump", 0,
+             "displacement control: a step that still fails after this many cut-backs is taken through by the "
+             "Jump Method, which also passes a fold (jump-to-contact, jump-off-contact, a ring of the contact "
+             "zone snapping on or off); 0: at the first failure (0 .. 50)",
              cutbacks);
+  valid->set("Jump Method", "relaxation",
+             "displacement control, a step that failed: \"relaxation\" relaxes the last state at the step's u "
+             "(pseudo-transient continuation: an overdamped motion ending in Newton steps) to where a damped "
+             "motion lands, and locates the fold by continuation if the state left its branch; \"continuation\" "
+             "follows the unstable branch by arc-length until u is back at the step's value (the connected "
+             "stable branch; slow where the unstable branch has many small loops, as when the contact zone "
+             "grows ring by ring)",
+             Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("relaxation", "continuation"))));
+  auto relaxIters = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(1, 100000));
+  valid->set("Relaxation Iterations", 400,
+             "Jump Method = relaxation: iterations (linear solves) a jump may take before the step counts as "
+             "failed (1 .. 100000)",
+             relaxIters);
   return valid;
 }
 
@@ -54,7 +66,9 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
   s.easyIterations = p.get<int>("Easy Step Iterations");
   s.growth = p.get<double>("Growth Factor");
   s.cutback = p.get<double>("Cutback Factor");
-  s.cutbacksBeforeContinuation = p.get<int>("Cutbacks Before Continuation");
+  s.cutbacksBeforeJump = p.get<int>("Cutbacks Before Jump");
+  s.relaxation.maxIterations = p.get<int>("Relaxation Iterations");
+  s.jumpMethod = p.get<std::string>("Jump Method") == "continuation" ? JumpMethod::Continuation : JumpMethod::Relaxation;
   if (s.path.size() < 2)
     throw InputError("Loading/Approach Path: needs at least two values (start and target), got " +
                      std::to_string(s.path.size()));
@@ -77,7 +91,7 @@ LoadPathSettings LoadPathSettings::fromParameters(const Teuchos::ParameterList& 
 }
 
 bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, StepInfo& info, int& step,
-                                  const Observer& observer) {
+                                  const Observer& observer, const Vector* landing) {
   const auto [lo, hi] = std::minmax_element(settings_.path.begin(), settings_.path.end());
   const Real range = 2.0 * (*hi - *lo) + std::abs(pNew - p);
   ContinuationSegment segment;
@@ -88,6 +102,7 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
   segment.initialStep = std::abs(pNew - p);
   segment.stableStart = true;
   segment.landOnly = true;
+  segment.stopAtFold = settings_.jumpMethod == LoadPathSettings::JumpMethod::Relaxation;
   model_->setLoad(p);
   bool first = true;
   const auto result = continuation_->run(u, segment, [&](const PathPoint& pt) {
@@ -107,6 +122,40 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
   });
   jumps_.push_back(result);
   model_->setLoad(pNew);
+  if (landing != nullptr && !result.reached) {
+    // The jump's end is known; the continuation only located its fold (or
+    // could not). The landing moves back along its branch (which exists
+    // there: it is stable at the step's u and ends only at its own fold) to
+    // the fold's u, so that the jump is vertical in the load curve and the
+    // loop's hysteresis that of a jump at the fold.
+    trial.assign(*landing);
+    info.jump = true;
+    info.newton.converged = true;
+    info.newton.iterations += result.newtonIterations;
+    info.newton.failure.clear();
+    if (result.stoppedAtFold) {
+      const Real uJump = result.folds.front().p[0];
+      Vector near(*landing, Teuchos::Copy);
+      model_->setLoad(uJump);
+      model_->dirichlet().impose(uJump, near);
+      const NewtonResult back = newton_.solve(near);
+      info.newton.iterations += back.iterations;
+      if (back.converged && (!continuous_ || continuous_(*landing, near))) {
+        trial.assign(near);
+        info.load = uJump;
+        info.newton.residualNorms = back.residualNorms;
+      }
+      model_->setLoad(info.load);
+    }
+    return true;
+  }
+  if (result.stoppedAtFold) {
+    const bool landed = relaxFromFold(result.folds.front(), segment.direction, pNew, trial, info);
+    info.newton.iterations += result.newtonIterations;
+    if (!landed) info.newton.failure = "jump from the fold at u = " + std::to_string(result.folds.front().p[0]) +
+                                       ": pseudo-transient relaxation failed: " + info.newton.failure;
+    return landed;
+  }
   if (!result.reached) {
     info.newton.failure = "continuation from u = " + std::to_string(p) + ": " + result.failure;
     return false;
@@ -114,10 +163,61 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
   trial.assign(*result.last.x);
   info.jump = !result.folds.empty();
   info.newton.converged = true;
-  info.newton.iterations = result.newtonIterations;
+  info.newton.iterations += result.newtonIterations;
   info.newton.residualNorms = {result.last.residual};
   info.newton.failure.clear();
   return true;
+}
+
+bool LoadStepper::relaxThrough(Real p, Real pNew, Vector& u, Vector& trial, StepInfo& info, int& step,
+                               const Observer& observer) {
+  // Relax from the last state straight to pNew. A state on the same branch
+  // by the continuity check is taken as it is: a plain step if the
+  // relaxation settled onto it, a small snap (a ring of the contact zone
+  // snapping on or off, which the check lets pass) if it fell. For a jump
+  // that leaves the branch (jump-in, pull-off) continuation from the last
+  // state locates the fold, so that the curve shows where the branch ends.
+  model_->setLoad(pNew);
+  trial.assign(u);
+  model_->dirichlet().impose(pNew, trial);
+  info.newton = newton_.relax(trial, settings_.relaxation);
+  if (!info.newton.converged) {
+    const int spent = info.newton.iterations;
+    const bool passed = continueThrough(p, pNew, u, trial, info, step, observer);
+    info.newton.iterations += spent;
+    return passed;
+  }
+  info.load = pNew;
+  info.jump = info.newton.fell;
+  if (!continuous_ || continuous_(u, trial)) return true;
+  info.jump = true;
+  const Vector landing(trial, Teuchos::Copy);
+  return continueThrough(p, pNew, u, trial, info, step, observer, &landing);
+}
+
+bool LoadStepper::relaxFromFold(const PathPoint& fold, Real direction, Real pNew, Vector& trial, StepInfo& info) {
+  // Just past the fold the state has no equilibrium nearby and relaxes to
+  // the far branch; if the relaxation fails there, further out.
+  const Real uFold = fold.p[0];
+  const Real room = std::max(0.0, direction * (pNew - uFold));
+  Real offset = std::min(room, 0.01 * settings_.initialIncrement);
+  int iterations = 0;
+  for (;;) {
+    const Real uJump = offset >= room ? pNew : uFold + direction * offset;
+    model_->setLoad(uJump);
+    trial.assign(*fold.x);
+    model_->dirichlet().impose(uJump, trial);
+    info.newton = newton_.relax(trial, settings_.relaxation);
+    iterations += info.newton.iterations;
+    info.newton.iterations = iterations;
+    if (info.newton.converged) {
+      info.load = uJump;
+      info.jump = true;
+      return true;
+    }
+    if (offset >= room) return false;
+    offset = std::min(room, 10.0 * offset);
+  }
 }
 
 void LoadStepper::run(Vector& u, const Observer& observer) {
@@ -177,8 +277,11 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
         if (converged) info.newton.failure = "the state left its branch";
         ++info.cutbacks;
         const bool exhausted = increment * settings_.cutback < settings_.minIncrement;
-        if (continuation_ != nullptr && (info.cutbacks > settings_.cutbacksBeforeContinuation || exhausted)) {
-          if (continueThrough(p, pNew, u, trial, info, step, observer)) {
+        if (continuation_ != nullptr && (info.cutbacks > settings_.cutbacksBeforeJump || exhausted)) {
+          const bool passed = settings_.jumpMethod == LoadPathSettings::JumpMethod::Relaxation
+                                  ? relaxThrough(p, pNew, u, trial, info, step, observer)
+                                  : continueThrough(p, pNew, u, trial, info, step, observer);
+          if (passed) {
             increment = settings_.initialIncrement;
             break;
           }

@@ -7,11 +7,15 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/solver/Convergence.hpp"
+#include "cgcm/solver/PseudoTransientModel.hpp"
 
 namespace cgcm::solver {
 
@@ -109,6 +113,14 @@ void NewtonSolver::resetJacobian() {
 }
 
 NewtonResult NewtonSolver::solve(Vector& u) {
+  return withGraphUpdates(u, [this](Vector& v) { return solveOnCurrentGraph(v); });
+}
+
+NewtonResult NewtonSolver::relax(Vector& u, const RelaxationSettings& settings) {
+  return withGraphUpdates(u, [&](Vector& v) { return relaxOnCurrentGraph(v, settings); });
+}
+
+NewtonResult NewtonSolver::withGraphUpdates(Vector& u, const std::function<NewtonResult(Vector&)>& attempt) {
   const auto t0 = std::chrono::steady_clock::now();
   const double eval0 = evaluationSeconds(model_->assembler());
   // The interaction couplings of the graph must cover the pairs near the start state.
@@ -117,7 +129,7 @@ NewtonResult NewtonSolver::solve(Vector& u) {
   int rebuilds = 0;
   for (int rebuild = 0;; ++rebuild) {
     model_->assembler().clearGraphOutdated();
-    result = solveOnCurrentGraph(u);
+    result = attempt(u);
     result.graphRebuilds = rebuilds;
     if (result.converged || !model_->assembler().graphOutdated() || rebuild == 2) break;
     // Pairs moved beyond the graph during the iteration: widen it around the
@@ -133,18 +145,134 @@ NewtonResult NewtonSolver::solve(Vector& u) {
 }
 
 NewtonResult NewtonSolver::solveOnCurrentGraph(Vector& u) {
+  return runNox(group_, *noxParams_, settings_.maxIterations, u);
+}
+
+NewtonResult NewtonSolver::relaxOnCurrentGraph(Vector& u, const RelaxationSettings& settings) {
+  // Implicit Euler in pseudo-time on M x_dot = -f(x) (f is the gradient of
+  // the potential energy): each iteration solves (M / delta + J) dx = -f.
+  // A step is redone with a quarter of delta when
+  //  - it is not a descent direction (f . dx >= 0): M / delta + J is then
+  //    indefinite along the soft mode of the fold and the step would climb
+  //    back towards the saddle;
+  //  - its state cannot be evaluated (an inverted cell, touching surfaces);
+  //  - |f| grows more than fourfold (the step went into the repulsive wall).
+  // The largest dof change is capped at settings.maxIncrement. After an
+  // accepted step delta grows by |f_old| / |f_new| times two (at most 10x,
+  // at least 1x), so the relaxation ends in Newton steps. NOX's own
+  // "Pseudo-Transient" solver has none of these safeguards: from the
+  // jump-in fold of the benchmark its first Newton-like step inverts a cell.
+  NewtonResult result;
+  const int rank = model_->map()->getComm()->getRank();
+  auto transient = Teuchos::rcp(new PseudoTransientModel(model_));
+  auto uCopy = Teuchos::rcp(new Vector(u, Teuchos::Copy));
+  const NOX::Thyra::Vector x0(Thyra::createVector(
+      Teuchos::rcp_implicit_cast<Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(uCopy)));
+  const Teuchos::RCP<::Thyra::PreconditionerBase<Real>> noPrecOp;
+  const Teuchos::RCP<::Thyra::PreconditionerFactoryBase<Real>> noPrecFactory;
+  Teuchos::RCP<NOX::Thyra::Group> group;
+  Teuchos::ParameterList linearSolve("Linear Solver");
+  auto evaluateAt = [&](const NOX::Abstract::Vector& x) {
+    group->setX(x);
+    if (group->computeF() != NOX::Abstract::Group::Ok) throw NumericalError("residual evaluation failed");
+    const Real n = residualNorm(*group);
+    if (!std::isfinite(n)) throw NumericalError("the residual is not finite");
+    return n;
+  };
+  Real fNorm = 0.0;
+  try {
+    transient->setMassFromJacobian(u);
+    group = Teuchos::rcp(new NOX::Thyra::Group(x0, transient, transient->create_W_op(), transient->get_W_factory(),
+                                               noPrecOp, noPrecFactory));
+    fNorm = evaluateAt(x0);
+  } catch (const std::exception& e) {
+    result.failure = std::string("pseudo-transient relaxation could not start: ") + e.what();
+    return result;
+  }
+  Real delta = settings.initialStep;
+  Real lowest = std::numeric_limits<Real>::infinity();
+  auto record = [&](Real n) {
+    if (n > 3.0 * lowest) result.fell = true;
+    lowest = std::min(lowest, n);
+    result.residualNorms.push_back(n);
+    if (settings_.printIterations && rank == 0)
+      std::printf("    relax %3d  |f| = %.6e  delta = %.3e\n", int(result.residualNorms.size()) - 1, n, delta);
+  };
+  record(fNorm);
+  const Real tolerance = settings_.tolerance();
+  while (fNorm > tolerance) {
+    if (result.iterations >= settings.maxIterations) {
+      result.failure = "no equilibrium after " + std::to_string(result.iterations) + " relaxation iterations (|f| = " +
+                       std::to_string(fNorm) + ")";
+      return result;
+    }
+    ++result.iterations;
+    const auto xOld = group->getX().clone(NOX::DeepCopy);
+    const auto fOld = group->getF().clone(NOX::DeepCopy);
+    std::string rejection;
+    try {
+      auto& in = group->getNonconstInArgs();
+      in.set_alpha(delta >= settings.newtonStep ? 0.0 : 1.0 / delta);
+      in.set_beta(1.0);
+      if (group->computeJacobian() != NOX::Abstract::Group::Ok ||
+          group->computeNewton(linearSolve) != NOX::Abstract::Group::Ok)
+        throw NumericalError("linear solve failed");
+      auto dx = group->getNewton().clone(NOX::DeepCopy);
+      if (dx->innerProduct(*fOld) >= 0.0) {
+        rejection = "no descent direction";
+      } else {
+        const Real largest = dx->norm(NOX::Abstract::Vector::MaxNorm);
+        if (settings.maxIncrement > 0.0 && largest > settings.maxIncrement) dx->scale(settings.maxIncrement / largest);
+        auto x = xOld->clone(NOX::DeepCopy);
+        x->update(1.0, *dx, 1.0);
+        const Real fNew = evaluateAt(*x);
+        if (fNew > 4.0 * fNorm && fNew > tolerance) {
+          rejection = "|f| grew from " + std::to_string(fNorm) + " to " + std::to_string(fNew);
+        } else {
+          delta *= std::clamp(2.0 * fNorm / fNew, 1.0, 10.0);
+          fNorm = fNew;
+          record(fNorm);
+          continue;
+        }
+      }
+    } catch (const std::exception& e) {
+      if (model_->assembler().graphOutdated()) {
+        lastIterate_ = tpetraCopy(group->getX());
+        result.failure = e.what();
+        return result;
+      }
+      rejection = e.what();
+    }
+    delta *= 0.25;
+    if (delta < settings.minStep) {
+      result.failure = "pseudo-time step below its minimum: " + rejection;
+      return result;
+    }
+    try {
+      fNorm = evaluateAt(*xOld);
+    } catch (const std::exception& e) {
+      result.failure = e.what();
+      return result;
+    }
+  }
+  result.converged = true;
+  u.assign(*tpetraCopy(group->getX()));
+  return result;
+}
+
+NewtonResult NewtonSolver::runNox(const Teuchos::RCP<NOX::Thyra::Group>& group, const Teuchos::ParameterList& params,
+                                  int maxIterations, Vector& u) {
   NewtonResult result;
   auto uCopy = Teuchos::rcp(new Vector(u, Teuchos::Copy));
-  group_->setX(NOX::Thyra::Vector(Thyra::createVector(
+  group->setX(NOX::Thyra::Vector(Thyra::createVector(
       Teuchos::rcp_implicit_cast<Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(uCopy))));
 
-  auto params = Teuchos::rcp(new Teuchos::ParameterList(*noxParams_));
+  auto solverParams = Teuchos::rcp(new Teuchos::ParameterList(params));
   Teuchos::RCP<NOX::Observer> recorder = Teuchos::rcp(
       new ResidualRecorder(result.residualNorms, settings_.printIterations, model_->map()->getComm()->getRank()));
-  params->sublist("Solver Options").set("Observer", recorder);
+  solverParams->sublist("Solver Options").set("Observer", recorder);
   try {
-    auto solver = NOX::Solver::buildSolver(group_, convergenceTests(settings_.tolerance(), settings_.maxIterations),
-                                           params);
+    auto solver = NOX::Solver::buildSolver(group, convergenceTests(settings_.tolerance(), maxIterations), solverParams);
     const auto status = solver->solve();
     result.iterations = solver->getNumIterations();
     if (status == NOX::StatusTest::Converged) {
@@ -152,14 +280,17 @@ NewtonResult NewtonSolver::solveOnCurrentGraph(Vector& u) {
       u.assign(*tpetraCopy(solver->getSolutionGroup().getX()));
     } else {
       const int n = result.iterations;
-      result.failure = n >= settings_.maxIterations ? "no convergence in " + std::to_string(n) + " iterations"
-                                                    : "non-finite residual or failed iterate";
+      const Real last = result.residualNorms.empty() ? 0.0 : result.residualNorms.back();
+      result.failure = n >= maxIterations   ? "no convergence in " + std::to_string(n) + " iterations"
+                       : std::isfinite(last) ? "no progress in " + std::to_string(n) + " iterations (|f| = " +
+                                                   std::to_string(last) + ")"
+                                             : "non-finite residual or failed iterate";
     }
   } catch (const std::exception& e) {
     // Inverted cells, touching surfaces, entries outside the graph, linear
     // solver breakdowns: a failed solve, not a crash.
     result.failure = e.what();
-    if (model_->assembler().graphOutdated()) lastIterate_ = tpetraCopy(group_->getX());
+    if (model_->assembler().graphOutdated()) lastIterate_ = tpetraCopy(group->getX());
   } catch (const char* e) {  // some NOX failures throw a bare string
     result.failure = std::string("NOX: ") + e;
   }

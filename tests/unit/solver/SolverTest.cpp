@@ -18,6 +18,7 @@
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
+#include "cgcm/solver/PseudoTransientModel.hpp"
 
 namespace cgcm {
 namespace {
@@ -186,6 +187,97 @@ TEST(ModelEvaluator, JacobianMatchesFiniteDifferencesOfResidual) {
     fp.update(-1.0 / (2 * h), fm, 1.0 / (2 * h));  // (f+ - f-)/2h
     fp.update(-1.0, Jv, 1.0);
     EXPECT_LT(fp.norm2(), 1e-6 * Jv.norm2());
+  }
+}
+
+TEST(PseudoTransientModel, ResidualAndShiftedJacobianAreMxdotPlusFAndAlphaMPlusJ) {
+  auto d = deck({"Problem/Formulation=plane strain", "Geometry/Block/Loaded Face=clamped", "Geometry/Block/Cells X=2",
+                 "Geometry/Block/Cells Y=2", "Geometry/Block/Distortion=0.2"});
+  System sys(*d);
+  const auto& map = sys.model->map();
+  assembly::Vector u(map), xDot(map), v(map);
+  u.randomize(-0.05, 0.05);
+  xDot.randomize(-1.0, 1.0);
+  v.randomize(-1.0, 1.0);
+  sys.model->setLoad(-0.03);
+  sys.dirichlet->impose(-0.03, u);
+  solver::PseudoTransientModel transient(sys.model);
+  transient.setMassFromJacobian(u);
+  // M: |diag J| on free rows, 0 on constrained ones.
+  auto J = sys.assembler->createMatrix();
+  assembly::Vector f(map), diag(map);
+  sys.assembler->evaluate(u, f, J.get());
+  sys.dirichlet->applyToResidual(u, -0.03, f);
+  J->getLocalDiagCopy(diag);
+  diag.abs(diag);
+  sys.dirichlet->zeroConstrained(diag);
+  assembly::Vector diff(map);
+  diff.update(1.0, transient.mass(), -1.0, diag, 0.0);
+  EXPECT_LT(diff.normInf(), 1e-14 * diag.normInf());
+  EXPECT_GT(transient.mass().normInf(), 0.0);
+
+  const double alpha = 3.7;
+  auto in = transient.createInArgs();
+  auto uc = Teuchos::rcp(new assembly::Vector(u, Teuchos::Copy));
+  auto xc = Teuchos::rcp(new assembly::Vector(xDot, Teuchos::Copy));
+  using TV = Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>;
+  in.set_x(Thyra::createConstVector(Teuchos::rcp_implicit_cast<const TV>(uc)));
+  in.set_x_dot(Thyra::createConstVector(Teuchos::rcp_implicit_cast<const TV>(xc)));
+  in.set_p(0, sys.model->getNominalValues().get_p(0));
+  in.set_alpha(alpha);
+  in.set_beta(1.0);
+  auto out = transient.createOutArgs();
+  auto fT = Teuchos::rcp(new assembly::Vector(map));
+  out.set_f(Thyra::createVector(Teuchos::rcp_implicit_cast<TV>(fT)));
+  const auto W = transient.create_W_op();
+  out.set_W_op(W);
+  transient.evalModel(in, out);
+  // f_t = f + M x_dot
+  assembly::Vector expected(map);
+  expected.elementWiseMultiply(1.0, transient.mass(), xDot, 0.0);
+  expected.update(1.0, f, 1.0);
+  diff.update(1.0, *fT, -1.0, expected, 0.0);
+  EXPECT_LT(diff.norm2(), 1e-12 * expected.norm2());
+  // W v = J v + alpha M v (J with the constrained rows as unit rows)
+  sys.dirichlet->applyToJacobian(*J);
+  assembly::Vector Wv(map), Jv(map);
+  using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
+  Extract::getTpetraOperator(W)->apply(v, Wv);
+  J->apply(v, Jv);
+  expected.elementWiseMultiply(alpha, transient.mass(), v, 0.0);
+  expected.update(1.0, Jv, 1.0);
+  diff.update(1.0, Wv, -1.0, expected, 0.0);
+  EXPECT_LT(diff.norm2(), 1e-12 * expected.norm2());
+}
+
+TEST(Newton, RelaxationEndsOnTheNewtonSolution) {
+  // The clamped 20 % compression in one step: pseudo-transient relaxation
+  // from rest reaches the state Newton reaches, with Newton's test.
+  for (std::string form : {"plane strain", "axisymmetric"}) {
+    SCOPED_TRACE(form);
+    auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Loaded Face=clamped", "Geometry/Block/Cells X=3",
+                   "Geometry/Block/Cells Y=3", "Loading/Approach Path={0, -0.2}"});
+    System sys(*d);
+    solver::NewtonSettings settings;
+    settings.residualTolerance = 1e-12;
+    settings.forceScale = sys.setup.forceScale;
+    solver::NewtonSolver newton(sys.model, settings);
+    assembly::Vector byNewton(sys.model->map()), byRelaxation(sys.model->map());
+    sys.model->setLoad(-0.2);
+    sys.dirichlet->impose(-0.2, byNewton);
+    sys.dirichlet->impose(-0.2, byRelaxation);
+    const auto rn = newton.solve(byNewton);
+    ASSERT_TRUE(rn.converged) << rn.failure;
+    solver::RelaxationSettings relax;
+    relax.initialStep = 0.1;
+    relax.maxIncrement = 0.05;
+    const auto rr = newton.relax(byRelaxation, relax);
+    ASSERT_TRUE(rr.converged) << rr.failure;
+    EXPECT_LE(rr.residualNorms.back(), settings.tolerance());
+    EXPECT_GT(rr.iterations, rn.iterations);  // it relaxed, with capped moves
+    EXPECT_FALSE(rr.fell);                    // a stable state straight ahead: no snap
+    byRelaxation.update(-1.0, byNewton, 1.0);
+    EXPECT_LT(byRelaxation.normInf(), 1e-9);
   }
 }
 

@@ -24,6 +24,8 @@ class DirichletConditions {
   void applyToJacobian(Matrix& J) const;
   /// Sets the constrained entries of u to their prescribed values.
   void impose(Real p, Vector& u) const;
+  /// Sets the constrained entries of v to zero.
+  void zeroConstrained(Vector& v) const;
   /// df/dp: -scale_i on constrained rows, 0 elsewhere.
   void residualParameterDerivative(Vector& dfdp) const;
 

@@ -51,10 +51,13 @@ struct ContinuationSegment {
   /// Only the end matters (a jump under displacement control): the first fold
   /// is located, later ones only counted.
   bool landOnly = false;
+  /// Stop at the first fold, once located (the run is then not `reached`).
+  bool stopAtFold = false;
 };
 
 struct ContinuationResult {
   bool reached = false;           ///< the parameter reached the target
+  bool stoppedAtFold = false;     ///< stopped at the first fold (ContinuationSegment::stopAtFold)
   std::string failure;            ///< why not
   int steps = 0;                  ///< converged continuation steps (fold trials excluded)
   int failedSteps = 0;            ///< corrector failures (cut back by LOCA)

@@ -7,6 +7,8 @@
 #include <NOX_StatusTest_Generic.H>
 #include <Teuchos_RCP.hpp>
 
+#include <vector>
+
 #include "cgcm/core/Types.hpp"
 
 namespace NOX::Abstract {
@@ -39,8 +41,29 @@ class ResidualNormTest : public NOX::StatusTest::Generic {
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
-/// The complete test of a nonlinear solve: failed on a non-finite residual or
-/// after `maxIterations`, converged on ResidualNormTest(tolerance).
+/// NOX status test: failed when Newton makes no progress, i.e. after
+/// iteration k >= window the residual norm is above the lowest one of
+/// iterations 0 .. k - window. A converging Newton iteration (quadratic near
+/// the solution, damped far from it) passes; one that wanders past a fold or
+/// around the snap of a contact ring is stopped after a few iterations
+/// instead of at the iteration limit.
+class ProgressTest : public NOX::StatusTest::Generic {
+ public:
+  explicit ProgressTest(int window = 5) : window_(window) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType type) override;
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent = 0) const override;
+
+ private:
+  int window_;
+  std::vector<Real> history_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+/// The complete test of a nonlinear solve: failed on a non-finite residual,
+/// without progress (ProgressTest) or after `maxIterations`, converged on
+/// ResidualNormTest(tolerance).
 Teuchos::RCP<NOX::StatusTest::Generic> convergenceTests(Real tolerance, int maxIterations);
 
 }  // namespace cgcm::solver

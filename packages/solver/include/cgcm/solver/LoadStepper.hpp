@@ -2,11 +2,15 @@
 // Displacement control along a piecewise-linear path of the load u, with
 // adaptive increments. A step that fails (no convergence, an evaluation
 // error, a state that left its branch) is cut back and redone from the last
-// converged state; it is never accepted. A step that still fails after a few
-// cut-backs hands over to arc-length continuation from the last state: if the
-// displacement-controlled branch ends at a fold, the continuation locates the
-// fold, follows the unstable branch and lands on the far stable branch at the
-// same u, which is the physical jump.
+// converged state; it is never accepted. A step that still fails after
+// `cutbacksBeforeJump` cut-backs is taken through by the jump method:
+// - relaxation (default): pseudo-transient relaxation from the last state to
+//   the step's u lands on the stable state a damped motion reaches; if that
+//   state left the branch (jump-in, pull-off), continuation from the last
+//   state locates the fold where the branch ends;
+// - continuation: arc-length continuation from the last state locates the
+//   fold, follows the unstable branch and lands on the far stable branch at
+//   the step's u.
 #include <Teuchos_ParameterList.hpp>
 
 #include <functional>
@@ -25,8 +29,15 @@ struct LoadPathSettings {
   int easyIterations = 4;             ///< grow the increment after steps this easy
   Real growth = 1.5;
   Real cutback = 0.5;
-  /// A step that still fails after this many cut-backs hands over to continuation.
-  int cutbacksBeforeContinuation = 2;
+  /// A step that still fails after this many cut-backs is taken through by the jump method.
+  int cutbacksBeforeJump = 0;
+  /// How a jump from a fold finds the far stable branch.
+  enum class JumpMethod {
+    Relaxation,   ///< pseudo-transient relaxation just past the fold
+    Continuation  ///< arc-length along the unstable branch back to the fold's u
+  };
+  JumpMethod jumpMethod = JumpMethod::Relaxation;
+  RelaxationSettings relaxation;
 
   /// Valid parameters of the displacement-control part of the "Loading" sublist.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -70,8 +81,17 @@ class LoadStepper {
   /// From the converged state u at p towards pNew: continuation until u
   /// reaches pNew again moving the same way. Fills trial and info, reports
   /// folds to the observer. False if the continuation failed.
+  /// `landing`: the jump's end, found by relaxation; the continuation then
+  /// only locates the fold.
   bool continueThrough(Real p, Real pNew, Vector& u, Vector& trial, StepInfo& info, int& step,
-                       const Observer& observer);
+                       const Observer& observer, const Vector* landing = nullptr);
+  /// The relaxation jump (Jump Method "relaxation") from the converged state
+  /// u at p to pNew; falls back to continueThrough for jumps that leave the
+  /// branch. Fills trial and info.
+  bool relaxThrough(Real p, Real pNew, Vector& u, Vector& trial, StepInfo& info, int& step, const Observer& observer);
+  /// The jump from a located fold towards pNew by relaxation at u just past
+  /// the fold (further out if that fails, at most pNew). Fills trial and info.
+  bool relaxFromFold(const PathPoint& fold, Real direction, Real pNew, Vector& trial, StepInfo& info);
 
   ContinuityCheck continuous_;
   Teuchos::RCP<ModelEvaluator> model_;

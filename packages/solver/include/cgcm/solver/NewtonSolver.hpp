@@ -4,6 +4,7 @@
 // test of Convergence.hpp.
 #include <Teuchos_ParameterList.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,18 @@ struct NewtonSettings {
   static NewtonSettings fromParameters(const Teuchos::ParameterList& p);
 };
 
+/// Pseudo-transient relaxation (PseudoTransientModel): the pseudo-time step
+/// delta is dimensionless (the "mass" is |diag df/dx| at the start), follows
+/// delta |f_old| / |f|, and beyond `newtonStep` the iteration is plain Newton.
+struct RelaxationSettings {
+  Real initialStep = 1.0;
+  Real minStep = 1e-8;
+  Real newtonStep = 1e6;
+  /// Cap on the largest dof change per iteration (length units; 0: none).
+  Real maxIncrement = 0.0;
+  int maxIterations = 400;
+};
+
 struct NewtonResult {
   bool converged = false;
   int iterations = 0;
@@ -42,6 +55,10 @@ struct NewtonResult {
   double seconds = 0.0;             ///< wall time of the whole solve
   double evaluationSeconds = 0.0;   ///< part of it spent in residual/tangent evaluations
   int graphRebuilds = 0;            ///< graph rebuilds during this solve
+  /// relax(): |f| rose to more than 3x its lowest earlier value on the way,
+  /// i.e. the state fell away from where it started (a snap), rather than
+  /// settling onto a nearby equilibrium.
+  bool fell = false;
 };
 
 class NewtonSolver {
@@ -55,13 +72,27 @@ class NewtonSolver {
   /// breakdowns) end the solve as a failure with their message. Collective.
   NewtonResult solve(Vector& u);
 
+  /// Relaxes u to an equilibrium at the model's current parameters by
+  /// pseudo-transient continuation: an overdamped descent that ends with
+  /// Newton steps, for a start that has no equilibrium nearby (just past a
+  /// fold). Converged only when the residual passes the same test as solve().
+  /// Collective.
+  NewtonResult relax(Vector& u, const RelaxationSettings& settings);
+
   /// Rebuilds the Jacobian operator (after the matrix graph changed).
   void resetJacobian();
 
   const NewtonSettings& settings() const { return settings_; }
 
  private:
+  /// Runs `attempt` on u, widening the interaction graph and retrying (at
+  /// most twice) if the iteration met couplings outside it.
+  NewtonResult withGraphUpdates(Vector& u, const std::function<NewtonResult(Vector&)>& attempt);
   NewtonResult solveOnCurrentGraph(Vector& u);
+  NewtonResult relaxOnCurrentGraph(Vector& u, const RelaxationSettings& settings);
+  /// Runs a NOX solver built from `params` on `group` from u; fills the result.
+  NewtonResult runNox(const Teuchos::RCP<NOX::Thyra::Group>& group, const Teuchos::ParameterList& params,
+                      int maxIterations, Vector& u);
 
   Teuchos::RCP<ModelEvaluator> model_;
   NewtonSettings settings_;
