@@ -25,8 +25,9 @@ target_link_libraries(cgcm_trilinos INTERFACE ${Trilinos_LIBRARIES} ${Trilinos_T
 find_package(GTest 1.12 REQUIRED)
 find_package(Python3 COMPONENTS Interpreter)
 
+# CGAL (header-only here: AABB trees on a floating-point kernel).
+find_package(CGAL 5.5 REQUIRED)
 # Optional for now; required by the packages that use them.
-find_package(CGAL QUIET)
 find_path(GMSH_INCLUDE_DIR gmsh.h)
 find_library(GMSH_LIBRARY gmsh)
 find_path(EXODUS_INCLUDE_DIR exodusII.h)

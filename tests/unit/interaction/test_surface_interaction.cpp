@@ -375,7 +375,7 @@ TEST(SurfaceInteraction, SameResultsWithEverySearchMethod) {
   auto lj = std::make_shared<LennardJones>(1.0, 1.0);
   std::vector<std::vector<InteractionPair>> lists;
   std::vector<std::vector<std::pair<LocalIndex, LocalIndex>>> graphs;
-  for (SearchMethod m : {SearchMethod::Tree, SearchMethod::Bins, SearchMethod::BruteForce}) {
+  for (SearchMethod m : {SearchMethod::Tree, SearchMethod::BruteForce}) {
     SurfaceInteractionOptions opt;
     opt.cutoff = 1.5;
     opt.search = m;

@@ -4,9 +4,9 @@
 // vertices (projection with clamping), so that the distance is continuous.
 //
 // The interface is dimension-neutral: the 2D/axisymmetric implementations
-// work on segments (SegmentTreeSearch2D, the default; SegmentSearch2D with
-// uniform bins; brute force for reference); a 3D implementation on triangles
-// or quadrilaterals (e.g. through CGAL AABB trees) implements the same class.
+// work on segments (AabbTreeSearch2D through CGAL's AABB tree, the default;
+// brute force for reference); a 3D implementation on triangles or
+// quadrilaterals implements the same class.
 #include <Kokkos_Macros.hpp>
 #include <limits>
 #include <memory>
@@ -82,64 +82,6 @@ KOKKOS_INLINE_FUNCTION Real projectOntoSegment(const Real x[2], const Real a[2],
   return g0 * g0 + g1 * g1;
 }
 
-/// 2D segments (plane strain and axisymmetric (rho, z)), uniform grid of
-/// bins over the segments' bounding box; a query visits rings of bins
-/// around the point until no closer segment can exist or the cutoff is
-/// passed. The grid has at most about 4 bins per segment.
-class SegmentSearch2D final : public ClosestPointSearch {
- public:
-  int dim() const override { return 2; }
-  using ClosestPointSearch::build;
-  void build(const Real* coords, const mesh::Surface& surface) override;
-  LocalIndex numFacets() const override { return LocalIndex(seg_.size() / 4); }
-  Projection project(const Real* x, Real cutoff) const override;
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
-
-  /// Grid statistics (for diagnostics and tests).
-  int binsX() const { return nx_; }
-  int binsY() const { return ny_; }
-  Real binSize() const { return h_; }
-
- private:
-  void cellOf(Real x, Real y, int& i, int& j) const;
-
-  std::vector<Real> seg_;  ///< ax, ay, bx, by per segment
-  Real lo_[2] = {0.0, 0.0}, hi_[2] = {0.0, 0.0};
-  Real h_ = 1.0;
-  int nx_ = 0, ny_ = 0;
-  std::vector<LocalIndex> cellStart_;  ///< CSR offsets, nx*ny + 1
-  std::vector<LocalIndex> cellItems_;  ///< segment ids per bin
-};
-
-/// 2D segments, bounding-box (AABB) tree: median splits along the longer
-/// side of the centroids' box, at most 4 segments per leaf; a query descends
-/// the nearer child first and prunes boxes farther than the best distance
-/// found (or the cutoff). Cost about log N per query wherever the point is,
-/// which suits points far from the surface better than bins.
-class SegmentTreeSearch2D final : public ClosestPointSearch {
- public:
-  int dim() const override { return 2; }
-  using ClosestPointSearch::build;
-  void build(const Real* coords, const mesh::Surface& surface) override;
-  LocalIndex numFacets() const override { return LocalIndex(ids_.size()); }
-  Projection project(const Real* x, Real cutoff) const override;
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
-  /// Exactly the facets within `radius` of x (boxes farther are pruned).
-  void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;
-
- private:
-  struct Node {
-    Real lo[2], hi[2];
-    int left = -1, right = -1;  ///< children; -1 for a leaf
-    int begin = 0, end = 0;     ///< leaf: range in ids_ / seg_
-  };
-  int buildNode(int begin, int end, std::vector<Real>& centroids, int depth);
-
-  std::vector<Node> nodes_;
-  std::vector<LocalIndex> ids_;  ///< facet ids in leaf order
-  std::vector<Real> seg_;        ///< ax, ay, bx, by in leaf order
-};
-
 /// Reference implementation: loops over all segments (tests, tiny surfaces).
 class BruteForceSegmentSearch2D final : public ClosestPointSearch {
  public:
@@ -154,16 +96,40 @@ class BruteForceSegmentSearch2D final : public ClosestPointSearch {
   std::vector<Real> seg_;
 };
 
+/// 2D segments through CGAL's AABB tree (the segments embedded in the plane
+/// z = 0, CGAL::AABB_tree with its kd-tree for distance queries). The
+/// closest primitive CGAL returns is confirmed among every facet whose
+/// geometry meets the box of that distance around the point, with the same
+/// projection arithmetic and tie rule as the other implementations, so all
+/// of them return the same projection. facetsNear lists the facets whose
+/// segment meets the widened box (a subset of the bounding-box overlaps,
+/// still a superset of the facets within the radius).
+class AabbTreeSearch2D final : public ClosestPointSearch {
+ public:
+  AabbTreeSearch2D();
+  ~AabbTreeSearch2D() override;
+  int dim() const override { return 2; }
+  using ClosestPointSearch::build;
+  void build(const Real* coords, const mesh::Surface& surface) override;
+  LocalIndex numFacets() const override { return LocalIndex(seg_.size() / 4); }
+  Projection project(const Real* x, Real cutoff) const override;
+  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+  std::vector<Real> seg_;  ///< ax, ay, bx, by per segment
+};
+
 /// Choice of search structure.
 enum class SearchMethod {
-  Tree,       ///< bounding-box tree (default)
-  Bins,       ///< uniform grid of bins
+  Tree,       ///< CGAL's AABB tree (default)
   BruteForce  ///< every facet (reference)
 };
 
-/// The search for a spatial dimension: 2 -> SegmentTreeSearch2D (Tree),
-/// SegmentSearch2D (Bins) or BruteForceSegmentSearch2D. Throws InputError
-/// for 3 (not available yet) and other values.
+/// The search for a spatial dimension: 2 -> AabbTreeSearch2D (Tree) or
+/// BruteForceSegmentSearch2D. Throws InputError for 3 (not available yet)
+/// and other values.
 std::unique_ptr<ClosestPointSearch> makeClosestPointSearch(int dim, SearchMethod method = SearchMethod::Tree);
 
 }  // namespace cgcm::interaction

@@ -1,0 +1,75 @@
+#pragma once
+// Helpers shared by the 2D closest-point searches (internal to the package):
+// the segments of a surface, the running best projection with the tie rule
+// of ClosestPointSearch, bounding boxes.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/ClosestPointSearch.hpp"
+
+namespace cgcm::interaction::detail {
+
+inline void copySegments(const Real* coords, const mesh::Surface& surface, std::vector<Real>& seg) {
+  if (surface.nodesPerFacet != 2)
+    throw InputError("2D closest-point search: surface facets must be segments (2 nodes), got " +
+                     std::to_string(surface.nodesPerFacet) + " nodes per facet");
+  const LocalIndex n = surface.numFacets();
+  seg.resize(std::size_t(4) * n);
+  for (LocalIndex e = 0; e < n; ++e) {
+    const LocalIndex a = surface.facets[2 * e], b = surface.facets[2 * e + 1];
+    seg[4 * e + 0] = coords[2 * std::size_t(a)];
+    seg[4 * e + 1] = coords[2 * std::size_t(a) + 1];
+    seg[4 * e + 2] = coords[2 * std::size_t(b)];
+    seg[4 * e + 3] = coords[2 * std::size_t(b) + 1];
+  }
+}
+
+// Keeps the lexicographically smallest (squared distance, facet index).
+struct Best {
+  Real d2 = std::numeric_limits<Real>::infinity();
+  LocalIndex facet = -1;
+  Real xi = 0.0;
+  Real p[2] = {0.0, 0.0};
+
+  // s: the segment's ax, ay, bx, by; e: its facet id
+  void consider(const Real* s, LocalIndex e, const Real* x, Real limit2) {
+    Real xi_, p_[2];
+    int region;
+    const Real d2_ = projectOntoSegment(x, s, s + 2, xi_, p_, region);
+    if (d2_ > limit2) return;
+    if (d2_ < d2 || (d2_ == d2 && e < facet)) {
+      d2 = d2_;
+      facet = e;
+      xi = xi_;
+      p[0] = p_[0];
+      p[1] = p_[1];
+    }
+  }
+
+  Projection result() const {
+    Projection pr;
+    if (facet < 0) return pr;
+    pr.facet = facet;
+    pr.xi[0] = xi;
+    pr.point[0] = p[0];
+    pr.point[1] = p[1];
+    pr.distance = std::sqrt(d2);
+    return pr;
+  }
+};
+
+inline void segmentBox(const Real* s, Real lo[2], Real hi[2]) {
+  lo[0] = std::min(s[0], s[2]);
+  hi[0] = std::max(s[0], s[2]);
+  lo[1] = std::min(s[1], s[3]);
+  hi[1] = std::max(s[1], s[3]);
+}
+
+inline bool boxesOverlap(const Real alo[2], const Real ahi[2], const Real blo[2], const Real bhi[2]) {
+  return alo[0] <= bhi[0] && blo[0] <= ahi[0] && alo[1] <= bhi[1] && blo[1] <= ahi[1];
+}
+
+}  // namespace cgcm::interaction::detail
