@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cgcm/core/Error.hpp"
-#include "SegmentSearchDetail.hpp"
+#include "SearchDetail.hpp"
 
 namespace cgcm::interaction {
 
@@ -36,14 +36,38 @@ void BruteForceSegmentSearch2D::facetsNear(const Real* lo, const Real* hi, Real 
 }
 
 // ---------------------------------------------------------------------------
+// BruteForceTriangleSearch3D
+
+void BruteForceTriangleSearch3D::build(const Real* coords, const mesh::Surface& surface) {
+  copyTriangles(coords, surface, tri_);
+}
+
+Projection BruteForceTriangleSearch3D::project(const Real* x, Real cutoff) const {
+  BestTriangle best;
+  const Real limit2 = cutoff * cutoff;
+  for (LocalIndex e = 0; e < numFacets(); ++e) best.consider(&tri_[9 * std::size_t(e)], e, x, limit2);
+  return best.result();
+}
+
+void BruteForceTriangleSearch3D::facetsNear(const Real* lo, const Real* hi, Real radius,
+                                            std::vector<LocalIndex>& out) const {
+  const Real qlo[3] = {lo[0] - radius, lo[1] - radius, lo[2] - radius};
+  const Real qhi[3] = {hi[0] + radius, hi[1] + radius, hi[2] + radius};
+  for (LocalIndex e = 0; e < numFacets(); ++e)
+    if (triangleBoxOverlaps(&tri_[9 * std::size_t(e)], qlo, qhi)) out.push_back(e);
+}
+
+// ---------------------------------------------------------------------------
 
 std::unique_ptr<ClosestPointSearch> makeClosestPointSearch(int dim, SearchMethod method) {
   if (dim == 2) {
     if (method == SearchMethod::BruteForce) return std::make_unique<BruteForceSegmentSearch2D>();
     return std::make_unique<AabbTreeSearch2D>();
   }
-  if (dim == 3)
-    throw InputError("closest-point search: 3D surfaces (triangles/quadrilaterals) are not available yet");
+  if (dim == 3) {
+    if (method == SearchMethod::BruteForce) return std::make_unique<BruteForceTriangleSearch3D>();
+    return std::make_unique<AabbTreeSearch3D>();
+  }
   throw InputError("closest-point search: dimension must be 2 or 3, got " + std::to_string(dim));
 }
 

@@ -251,8 +251,9 @@ TEST(ClosestPointSearch, EmptySurfaceAndInvalidInput) {
     EXPECT_TRUE(near.empty());
     EXPECT_THROW(search->build(coords, tri), InputError);
   }
-  EXPECT_THROW(makeClosestPointSearch(3), InputError);
+  EXPECT_THROW(makeClosestPointSearch(4), InputError);
   EXPECT_NE(makeClosestPointSearch(2), nullptr);
+  EXPECT_EQ(makeClosestPointSearch(3)->dim(), 3);
 }
 
 TEST(ClosestPointSearch, TimingAgainstBruteForce) {
@@ -291,4 +292,185 @@ TEST(ClosestPointSearch, TimingAgainstBruteForce) {
                 "per query\n",
                 spread, cutoff, cost[0], cost[1]);
   }
+}
+
+// ---------------------------------------------------------------------------
+// 3D: triangles
+
+namespace {
+
+// A wavy sheet over [0, 2] x [0, 2] (n x n cells, each split into two
+// triangles, the diagonal alternating) closed by a sphere of radius 0.5
+// above it (latitude-longitude triangles): convex and concave edges and
+// vertices, and vertices shared by many triangles.
+mesh::Surface wavySheetAndBall(std::vector<Real>& coords, int n) {
+  mesh::Surface s;
+  s.nodesPerFacet = 3;
+  auto node = [&](Real x, Real y, Real z) {
+    coords.insert(coords.end(), {x, y, z});
+    return LocalIndex(coords.size() / 3 - 1);
+  };
+  std::vector<LocalIndex> grid;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const Real x = 2.0 * i / n, y = 2.0 * j / n;
+      grid.push_back(node(x, y, 0.15 * std::sin(3.0 * x) * std::cos(2.0 * y)));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const LocalIndex a = grid[j * (n + 1) + i], b = a + 1, c = a + (n + 1), d = c + 1;
+      if ((i + j) % 2 == 0)
+        s.facets.insert(s.facets.end(), {a, b, d, a, d, c});
+      else
+        s.facets.insert(s.facets.end(), {a, b, c, b, d, c});
+    }
+  const int nl = 8, nt = 12;
+  const Real cx = 1.0, cy = 1.0, cz = 0.9, R = 0.5;
+  const LocalIndex top = node(cx, cy, cz + R), bottom = node(cx, cy, cz - R);
+  std::vector<LocalIndex> ring;
+  for (int l = 1; l < nl; ++l)
+    for (int t = 0; t < nt; ++t) {
+      const Real th = kPi * l / nl, ph = 2.0 * kPi * t / nt;
+      ring.push_back(node(cx + R * std::sin(th) * std::cos(ph), cy + R * std::sin(th) * std::sin(ph),
+                          cz + R * std::cos(th)));
+    }
+  auto at = [&](int l, int t) { return ring[(l - 1) * nt + (t % nt)]; };
+  for (int t = 0; t < nt; ++t) {
+    s.facets.insert(s.facets.end(), {top, at(1, t), at(1, t + 1)});
+    s.facets.insert(s.facets.end(), {bottom, at(nl - 1, t + 1), at(nl - 1, t)});
+    for (int l = 1; l < nl - 1; ++l) {
+      s.facets.insert(s.facets.end(), {at(l, t), at(l + 1, t), at(l + 1, t + 1)});
+      s.facets.insert(s.facets.end(), {at(l, t), at(l + 1, t + 1), at(l, t + 1)});
+    }
+  }
+  return s;
+}
+
+void expectSameProjection3D(const Projection& a, const Projection& b, const Real* x) {
+  ASSERT_EQ(a.found(), b.found()) << "x = (" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+  if (!a.found()) return;
+  EXPECT_EQ(a.facet, b.facet) << "x = (" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+  EXPECT_NEAR(a.distance, b.distance, 1e-13);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(a.point[k], b.point[k], 1e-13);
+  EXPECT_NEAR(a.xi[0], b.xi[0], 1e-13);
+  EXPECT_NEAR(a.xi[1], b.xi[1], 1e-13);
+}
+
+}  // namespace
+
+TEST(TriangleProjection, IsTheClosestPointOfTheTriangle) {
+  // Against a dense sampling of the triangle: never farther than the closest
+  // sample, and the point lies in the triangle (s, t >= 0, s + t <= 1).
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<Real> u(-1.5, 1.5);
+  int regions[7] = {0, 0, 0, 0, 0, 0, 0};
+  for (int trial = 0; trial < 300; ++trial) {
+    Real a[3], b[3], c[3], x[3];
+    for (int k = 0; k < 3; ++k) {
+      a[k] = u(rng);
+      b[k] = u(rng);
+      c[k] = u(rng);
+      x[k] = u(rng);
+    }
+    Real xi[2], p[3];
+    int region;
+    const Real d2 = projectOntoTriangle(x, a, b, c, xi, p, region);
+    ++regions[region];
+    EXPECT_GE(xi[0], -1e-14);
+    EXPECT_GE(xi[1], -1e-14);
+    EXPECT_LE(xi[0] + xi[1], 1.0 + 1e-14);
+    Real best = std::numeric_limits<Real>::infinity();
+    const int m = 60;
+    for (int i = 0; i <= m; ++i)
+      for (int j = 0; i + j <= m; ++j) {
+        Real q2 = 0.0;
+        for (int k = 0; k < 3; ++k) {
+          const Real q = a[k] + (b[k] - a[k]) * i / m + (c[k] - a[k]) * j / m;
+          q2 += (x[k] - q) * (x[k] - q);
+        }
+        best = std::min(best, q2);
+      }
+    EXPECT_LE(d2, best + 1e-12);
+  }
+  for (int r = 0; r < 7; ++r) EXPECT_GT(regions[r], 0) << "region " << r << " never met";
+}
+
+TEST(ClosestPointSearch3D, MatchesBruteForceOnFacesEdgesAndVertices) {
+  std::vector<Real> coords;
+  const mesh::Surface surf = wavySheetAndBall(coords, 24);
+  BruteForceTriangleSearch3D brute;
+  AabbTreeSearch3D tree;
+  brute.build(coords, surf);
+  tree.build(coords, surf);
+  ASSERT_EQ(tree.numFacets(), brute.numFacets());
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<Real> ux(-0.3, 2.3), uz(-0.6, 1.8);
+  const Real inf = std::numeric_limits<Real>::infinity();
+  int regions[7] = {0, 0, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 20000; ++i) {
+    const Real x[3] = {ux(rng), ux(rng), uz(rng)};
+    const Projection pb = brute.project(x, inf);
+    expectSameProjection3D(tree.project(x, inf), pb, x);
+    Real xi[2], p[3];
+    int region;
+    const Real* t = nullptr;
+    std::vector<Real> tri(9);
+    for (int v = 0; v < 3; ++v)
+      for (int k = 0; k < 3; ++k) tri[3 * v + k] = coords[3 * std::size_t(surf.facets[3 * pb.facet + v]) + k];
+    t = tri.data();
+    projectOntoTriangle(x, t, t + 3, t + 6, xi, p, region);
+    ++regions[region];
+  }
+  // faces, edges and vertices are all exercised
+  EXPECT_GT(regions[0], 2000);
+  EXPECT_GT(regions[4] + regions[5] + regions[6], 500);
+  EXPECT_GT(regions[1] + regions[2] + regions[3], 50);
+  // with cutoffs: found exactly when within, the same projection
+  for (Real cutoff : {0.05, 0.3}) {
+    int kept = 0, pruned = 0;
+    for (int i = 0; i < 5000; ++i) {
+      const Real x[3] = {ux(rng), ux(rng), uz(rng)};
+      const Projection full = brute.project(x, inf);
+      const Projection pt = tree.project(x, cutoff);
+      expectSameProjection3D(pt, brute.project(x, cutoff), x);
+      EXPECT_EQ(pt.found(), full.distance <= cutoff);
+      (pt.found() ? kept : pruned)++;
+    }
+    EXPECT_GT(kept, 100);
+    EXPECT_GT(pruned, 100);
+  }
+}
+
+TEST(ClosestPointSearch3D, FacetsNearCoverEveryFacetWithinTheRadius) {
+  std::vector<Real> coords;
+  const mesh::Surface surf = wavySheetAndBall(coords, 16);
+  BruteForceTriangleSearch3D brute;
+  AabbTreeSearch3D tree;
+  brute.build(coords, surf);
+  tree.build(coords, surf);
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<Real> u(-0.2, 2.2), w(0.0, 0.3);
+  for (int i = 0; i < 300; ++i) {
+    const Real x[3] = {u(rng), u(rng), u(rng) - 0.6};
+    const Real radius = w(rng);
+    std::vector<LocalIndex> a, b;
+    tree.facetsNearPoint(x, radius, a);
+    brute.facetsNearPoint(x, radius, b);
+    EXPECT_TRUE(std::includes(b.begin(), b.end(), a.begin(), a.end()));
+    for (LocalIndex e = 0; e < tree.numFacets(); ++e) {
+      Real xi[2], p[3];
+      int region;
+      const Real* t = &coords[0];
+      Real tri[9];
+      for (int v = 0; v < 3; ++v)
+        for (int k = 0; k < 3; ++k) tri[3 * v + k] = t[3 * std::size_t(surf.facets[3 * e + v]) + k];
+      if (projectOntoTriangle(x, tri, tri + 3, tri + 6, xi, p, region) <= radius * radius) {
+        EXPECT_TRUE(std::binary_search(a.begin(), a.end(), e)) << e;
+      }
+    }
+  }
+  mesh::Surface quads;
+  quads.nodesPerFacet = 4;
+  quads.facets = {0, 1, 2, 3};
+  EXPECT_THROW(tree.build(coords, quads), InputError);
 }

@@ -82,6 +82,54 @@ KOKKOS_INLINE_FUNCTION Real projectOntoSegment(const Real x[2], const Real a[2],
   return g0 * g0 + g1 * g1;
 }
 
+/// Point-to-triangle projection (Ericson, Real-Time Collision Detection
+/// 5.1.5): the closest point of triangle abc to x by its Voronoi regions.
+/// Returns the squared distance; xi = (s, t) with p = a + s (b - a) + t (c - a);
+/// region 0 inside the face, 1..3 at vertex a, b, c, 4..6 on edge ab, bc, ca.
+KOKKOS_INLINE_FUNCTION Real projectOntoTriangle(const Real x[3], const Real a[3], const Real b[3], const Real c[3],
+                                                Real xi[2], Real p[3], int& region) {
+  Real ab[3], ac[3], ap[3];
+  for (int k = 0; k < 3; ++k) {
+    ab[k] = b[k] - a[k];
+    ac[k] = c[k] - a[k];
+    ap[k] = x[k] - a[k];
+  }
+  auto dot = [](const Real* u, const Real* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  auto finish = [&](Real s, Real t, int r) {
+    xi[0] = s;
+    xi[1] = t;
+    region = r;
+    Real d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      p[k] = a[k] + s * ab[k] + t * ac[k];
+      d2 += (x[k] - p[k]) * (x[k] - p[k]);
+    }
+    return d2;
+  };
+  const Real d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return finish(0.0, 0.0, 1);
+  Real bp[3], cp[3];
+  for (int k = 0; k < 3; ++k) {
+    bp[k] = x[k] - b[k];
+    cp[k] = x[k] - c[k];
+  }
+  const Real d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return finish(1.0, 0.0, 2);
+  const Real vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return finish(d1 / (d1 - d3), 0.0, 4);
+  const Real d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return finish(0.0, 1.0, 3);
+  const Real vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return finish(0.0, d2 / (d2 - d6), 6);
+  const Real va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const Real w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return finish(1.0 - w, w, 5);
+  }
+  const Real denom = 1.0 / (va + vb + vc);
+  return finish(vb * denom, vc * denom, 0);
+}
+
 /// Reference implementation: loops over all segments (tests, tiny surfaces).
 class BruteForceSegmentSearch2D final : public ClosestPointSearch {
  public:
@@ -121,6 +169,40 @@ class AabbTreeSearch2D final : public ClosestPointSearch {
   std::vector<Real> seg_;  ///< ax, ay, bx, by per segment
 };
 
+/// Reference implementation in 3D: loops over all triangles (3-node facets).
+class BruteForceTriangleSearch3D final : public ClosestPointSearch {
+ public:
+  int dim() const override { return 3; }
+  using ClosestPointSearch::build;
+  void build(const Real* coords, const mesh::Surface& surface) override;
+  LocalIndex numFacets() const override { return LocalIndex(tri_.size() / 9); }
+  Projection project(const Real* x, Real cutoff) const override;
+  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
+
+ private:
+  std::vector<Real> tri_;  ///< a, b, c (3 coordinates each) per triangle
+};
+
+/// Triangles (3-node facets) through CGAL's AABB tree, with the same
+/// confirmation of CGAL's closest primitive as AabbTreeSearch2D: the result
+/// equals brute force's, facet, region and tie rule included.
+class AabbTreeSearch3D final : public ClosestPointSearch {
+ public:
+  AabbTreeSearch3D();
+  ~AabbTreeSearch3D() override;
+  int dim() const override { return 3; }
+  using ClosestPointSearch::build;
+  void build(const Real* coords, const mesh::Surface& surface) override;
+  LocalIndex numFacets() const override { return LocalIndex(tri_.size() / 9); }
+  Projection project(const Real* x, Real cutoff) const override;
+  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
+  std::vector<Real> tri_;
+};
+
 /// Choice of search structure.
 enum class SearchMethod {
   Tree,       ///< CGAL's AABB tree (default)
@@ -128,8 +210,8 @@ enum class SearchMethod {
 };
 
 /// The search for a spatial dimension: 2 -> AabbTreeSearch2D (Tree) or
-/// BruteForceSegmentSearch2D. Throws InputError for 3 (not available yet)
-/// and other values.
+/// BruteForceSegmentSearch2D; 3 -> AabbTreeSearch3D or
+/// BruteForceTriangleSearch3D (triangles). Throws InputError for other values.
 std::unique_ptr<ClosestPointSearch> makeClosestPointSearch(int dim, SearchMethod method = SearchMethod::Tree);
 
 }  // namespace cgcm::interaction

@@ -1,9 +1,10 @@
 #pragma once
-// Helpers shared by the 2D closest-point searches (internal to the package):
-// the segments of a surface, the running best projection with the tie rule
-// of ClosestPointSearch, bounding boxes.
+// Helpers shared by the closest-point searches (internal to the package):
+// the segments (2D) and triangles (3D) of a surface, the running best
+// projection with the tie rule of ClosestPointSearch, bounding boxes.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,59 @@ inline void segmentBox(const Real* s, Real lo[2], Real hi[2]) {
 
 inline bool boxesOverlap(const Real alo[2], const Real ahi[2], const Real blo[2], const Real bhi[2]) {
   return alo[0] <= bhi[0] && blo[0] <= ahi[0] && alo[1] <= bhi[1] && blo[1] <= ahi[1];
+}
+
+inline void copyTriangles(const Real* coords, const mesh::Surface& surface, std::vector<Real>& tri) {
+  if (surface.nodesPerFacet != 3)
+    throw InputError("3D closest-point search: surface facets must be triangles (3 nodes), got " +
+                     std::to_string(surface.nodesPerFacet) + " nodes per facet");
+  const LocalIndex n = surface.numFacets();
+  tri.resize(std::size_t(9) * n);
+  for (LocalIndex e = 0; e < n; ++e)
+    for (int v = 0; v < 3; ++v)
+      for (int k = 0; k < 3; ++k) tri[9 * std::size_t(e) + 3 * v + k] = coords[3 * std::size_t(surface.facets[3 * e + v]) + k];
+}
+
+// Keeps the lexicographically smallest (squared distance, facet index) over triangles.
+struct BestTriangle {
+  Real d2 = std::numeric_limits<Real>::infinity();
+  LocalIndex facet = -1;
+  Real xi[2] = {0.0, 0.0};
+  Real p[3] = {0.0, 0.0, 0.0};
+
+  // t: the triangle's a, b, c; e: its facet id
+  void consider(const Real* t, LocalIndex e, const Real* x, Real limit2) {
+    Real xi_[2], p_[3];
+    int region;
+    const Real d2_ = projectOntoTriangle(x, t, t + 3, t + 6, xi_, p_, region);
+    if (d2_ > limit2) return;
+    if (d2_ < d2 || (d2_ == d2 && e < facet)) {
+      d2 = d2_;
+      facet = e;
+      xi[0] = xi_[0];
+      xi[1] = xi_[1];
+      for (int k = 0; k < 3; ++k) p[k] = p_[k];
+    }
+  }
+
+  Projection result() const {
+    Projection pr;
+    if (facet < 0) return pr;
+    pr.facet = facet;
+    pr.xi[0] = xi[0];
+    pr.xi[1] = xi[1];
+    for (int k = 0; k < 3; ++k) pr.point[k] = p[k];
+    pr.distance = std::sqrt(d2);
+    return pr;
+  }
+};
+
+inline bool triangleBoxOverlaps(const Real* t, const Real lo[3], const Real hi[3]) {
+  for (int k = 0; k < 3; ++k) {
+    const Real tlo = std::min({t[k], t[3 + k], t[6 + k]}), thi = std::max({t[k], t[3 + k], t[6 + k]});
+    if (thi < lo[k] || hi[k] < tlo) return false;
+  }
+  return true;
 }
 
 }  // namespace cgcm::interaction::detail
