@@ -72,73 +72,63 @@ struct FacetTree {
   }
 };
 
-using SegmentTree = FacetTree<Kernel::Segment_3, CGAL::AABB_segment_primitive, 2>;
-using TriangleTree = FacetTree<Kernel::Triangle_3, CGAL::AABB_triangle_primitive, 3>;
+// What differs between the dimensions: the CGAL datum of a facet, how the
+// facets' coordinates are copied, and the projection that decides.
+template <int Dim>
+struct Facets;
+template <>
+struct Facets<2> {
+  using Tree = FacetTree<Kernel::Segment_3, CGAL::AABB_segment_primitive, 2>;
+  using Best = detail::Best;
+  static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { detail::copySegments(coords, s, v); }
+  static Kernel::Segment_3 datum(const Real* v) { return {Point3(v[0], v[1], 0.0), Point3(v[2], v[3], 0.0)}; }
+};
+template <>
+struct Facets<3> {
+  using Tree = FacetTree<Kernel::Triangle_3, CGAL::AABB_triangle_primitive, 3>;
+  using Best = detail::BestTriangle;
+  static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { detail::copyTriangles(coords, s, v); }
+  static Kernel::Triangle_3 datum(const Real* v) {
+    return {Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5]), Point3(v[6], v[7], v[8])};
+  }
+};
 
 }  // namespace
 
-// ---------------------------------------------------------------------------
-// AabbTreeSearch2D
+template <int Dim>
+struct AabbTreeSearch<Dim>::Tree : Facets<Dim>::Tree {};
 
-struct AabbTreeSearch2D::Tree : SegmentTree {};
+template <int Dim>
+AabbTreeSearch<Dim>::AabbTreeSearch() : tree_(std::make_unique<Tree>()) {}
+template <int Dim>
+AabbTreeSearch<Dim>::~AabbTreeSearch() = default;
 
-AabbTreeSearch2D::AabbTreeSearch2D() : tree_(std::make_unique<Tree>()) {}
-AabbTreeSearch2D::~AabbTreeSearch2D() = default;
-
-void AabbTreeSearch2D::build(const Real* coords, const mesh::Surface& surface) {
-  detail::copySegments(coords, surface, seg_);
+template <int Dim>
+void AabbTreeSearch<Dim>::build(const Real* coords, const mesh::Surface& surface) {
+  Facets<Dim>::copy(coords, surface, vertices_);
   auto t = std::make_unique<Tree>();
   t->facets.reserve(numFacets());
-  for (LocalIndex e = 0; e < numFacets(); ++e) {
-    const Real* s = &seg_[4 * std::size_t(e)];
-    t->facets.emplace_back(Point3(s[0], s[1], 0.0), Point3(s[2], s[3], 0.0));
-  }
+  for (LocalIndex e = 0; e < numFacets(); ++e) t->facets.push_back(Facets<Dim>::datum(&vertices_[kStride * e]));
   t->build();
   tree_ = std::move(t);
 }
 
-Projection AabbTreeSearch2D::project(const Real* x, Real cutoff) const {
+template <int Dim>
+Projection AabbTreeSearch<Dim>::project(const Real* x, Real cutoff) const {
   std::vector<LocalIndex> candidates;
   if (!tree_->candidates(x, cutoff, candidates)) return {};
-  detail::Best best;
-  for (LocalIndex e : candidates) best.consider(&seg_[4 * std::size_t(e)], e, x, cutoff * cutoff);
+  typename Facets<Dim>::Best best;
+  for (LocalIndex e : candidates) best.consider(&vertices_[kStride * e], e, x, cutoff * cutoff);
   return best.result();
 }
 
-void AabbTreeSearch2D::facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const {
+template <int Dim>
+void AabbTreeSearch<Dim>::facetsNear(const Real* lo, const Real* hi, Real radius,
+                                     std::vector<LocalIndex>& out) const {
   tree_->facetsNear(lo, hi, radius, out);
 }
 
-// ---------------------------------------------------------------------------
-// AabbTreeSearch3D
-
-struct AabbTreeSearch3D::Tree : TriangleTree {};
-
-AabbTreeSearch3D::AabbTreeSearch3D() : tree_(std::make_unique<Tree>()) {}
-AabbTreeSearch3D::~AabbTreeSearch3D() = default;
-
-void AabbTreeSearch3D::build(const Real* coords, const mesh::Surface& surface) {
-  detail::copyTriangles(coords, surface, tri_);
-  auto t = std::make_unique<Tree>();
-  t->facets.reserve(numFacets());
-  for (LocalIndex e = 0; e < numFacets(); ++e) {
-    const Real* v = &tri_[9 * std::size_t(e)];
-    t->facets.emplace_back(Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5]), Point3(v[6], v[7], v[8]));
-  }
-  t->build();
-  tree_ = std::move(t);
-}
-
-Projection AabbTreeSearch3D::project(const Real* x, Real cutoff) const {
-  std::vector<LocalIndex> candidates;
-  if (!tree_->candidates(x, cutoff, candidates)) return {};
-  detail::BestTriangle best;
-  for (LocalIndex e : candidates) best.consider(&tri_[9 * std::size_t(e)], e, x, cutoff * cutoff);
-  return best.result();
-}
-
-void AabbTreeSearch3D::facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const {
-  tree_->facetsNear(lo, hi, radius, out);
-}
+template class AabbTreeSearch<2>;
+template class AabbTreeSearch<3>;
 
 }  // namespace cgcm::interaction

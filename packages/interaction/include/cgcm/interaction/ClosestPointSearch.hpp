@@ -144,31 +144,6 @@ class BruteForceSegmentSearch2D final : public ClosestPointSearch {
   std::vector<Real> seg_;
 };
 
-/// 2D segments through CGAL's AABB tree (the segments embedded in the plane
-/// z = 0, CGAL::AABB_tree with its kd-tree for distance queries). The
-/// closest primitive CGAL returns is confirmed among every facet whose
-/// geometry meets the box of that distance around the point, with the same
-/// projection arithmetic and tie rule as the other implementations, so all
-/// of them return the same projection. facetsNear lists the facets whose
-/// segment meets the widened box (a subset of the bounding-box overlaps,
-/// still a superset of the facets within the radius).
-class AabbTreeSearch2D final : public ClosestPointSearch {
- public:
-  AabbTreeSearch2D();
-  ~AabbTreeSearch2D() override;
-  int dim() const override { return 2; }
-  using ClosestPointSearch::build;
-  void build(const Real* coords, const mesh::Surface& surface) override;
-  LocalIndex numFacets() const override { return LocalIndex(seg_.size() / 4); }
-  Projection project(const Real* x, Real cutoff) const override;
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
-
- private:
-  struct Tree;
-  std::unique_ptr<Tree> tree_;
-  std::vector<Real> seg_;  ///< ax, ay, bx, by per segment
-};
-
 /// Reference implementation in 3D: loops over all triangles (3-node facets).
 class BruteForceTriangleSearch3D final : public ClosestPointSearch {
  public:
@@ -183,25 +158,34 @@ class BruteForceTriangleSearch3D final : public ClosestPointSearch {
   std::vector<Real> tri_;  ///< a, b, c (3 coordinates each) per triangle
 };
 
-/// Triangles (3-node facets) through CGAL's AABB tree, with the same
-/// confirmation of CGAL's closest primitive as AabbTreeSearch2D: the result
-/// equals brute force's, facet, region and tie rule included.
-class AabbTreeSearch3D final : public ClosestPointSearch {
+/// Facets through CGAL's AABB tree: Dim = 2, segments (embedded in the plane
+/// z = 0); Dim = 3, triangles. The closest primitive CGAL returns is
+/// confirmed among every facet whose geometry meets the box of that distance
+/// around the point, with the same projection arithmetic and tie rule as
+/// brute force, so the result is brute force's (facet, point, local
+/// coordinates). facetsNear lists the facets whose geometry meets the widened
+/// box (a subset of the bounding-box overlaps, still a superset of the
+/// facets within the radius). The tree is rebuilt by build(): CGAL has no refit.
+template <int Dim>
+class AabbTreeSearch final : public ClosestPointSearch {
  public:
-  AabbTreeSearch3D();
-  ~AabbTreeSearch3D() override;
-  int dim() const override { return 3; }
+  AabbTreeSearch();
+  ~AabbTreeSearch() override;
+  int dim() const override { return Dim; }
   using ClosestPointSearch::build;
   void build(const Real* coords, const mesh::Surface& surface) override;
-  LocalIndex numFacets() const override { return LocalIndex(tri_.size() / 9); }
+  LocalIndex numFacets() const override { return LocalIndex(vertices_.size() / kStride); }
   Projection project(const Real* x, Real cutoff) const override;
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:
+  static constexpr std::size_t kStride = Dim == 2 ? 4 : 9;  ///< coordinates per facet
   struct Tree;
   std::unique_ptr<Tree> tree_;
-  std::vector<Real> tri_;
+  std::vector<Real> vertices_;  ///< the facets' vertex coordinates, kStride per facet
 };
+using AabbTreeSearch2D = AabbTreeSearch<2>;
+using AabbTreeSearch3D = AabbTreeSearch<3>;
 
 /// Choice of search structure.
 enum class SearchMethod {
