@@ -16,5 +16,7 @@ echo "== one approach-retraction curve of the default deck (split in summary.txt
 cat output/bench-demo/summary.txt
 echo "== Method 3 kernel and search, per pair"
 "$build/bin/bench_interaction_kernel"
+echo "== closest-point search: AABB build and queries per Newton iteration"
+"$build/bin/bench_closest_point"
 echo "== a path through folds: displacement against arc-length control"
 bash bench/continuation.sh "$build"

@@ -49,17 +49,24 @@ struct FacetTree {
     for (const auto& it : hits) out.push_back(LocalIndex(it - facets.cbegin()));
   }
 
-  // The facets that can hold the closest point to x within the cutoff: every
-  // facet as close as the one CGAL finds, to round-off (the caller decides
-  // among them with the common projection arithmetic and tie rule). False if
-  // none lies within the cutoff.
+  // The facets that can hold the closest point to x within the cutoff: the
+  // one CGAL finds and every facet through its closest point p (to
+  // round-off), i.e. those sharing the vertex or edge p lies on, which are
+  // as close; the caller decides among them with the common projection
+  // arithmetic and tie rule. (Facets equally close at other points, an exact
+  // tie between separate parts of the surface, are not searched for: CGAL's
+  // choice stands.) False if none lies within the cutoff.
   bool candidates(const Real* x, Real cutoff, std::vector<LocalIndex>& out) const {
     if (facets.empty()) return false;
     // Nothing within the cutoff: one box test instead of a distance query.
     if (std::isfinite(cutoff) && !tree.do_intersect(box(x, x, cutoff))) return false;
-    const Real d = std::sqrt(tree.squared_distance(point(x)));
-    if (d > cutoff * (1.0 + 1e-12)) return false;
-    intersecting(x, x, d * (1.0 + 1e-9) + 1e-300, out);
+    const auto [closest, primitive] = tree.closest_point_and_primitive(point(x));
+    const Real p[3] = {closest.x(), closest.y(), closest.z()};
+    const Real d2 = CGAL::squared_distance(point(x), closest);
+    if (d2 > cutoff * cutoff * (1.0 + 1e-12)) return false;
+    out.push_back(LocalIndex(primitive - facets.cbegin()));
+    const Real scale = std::sqrt(d2) + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]);
+    intersecting(p, p, 1e-12 * scale + 1e-300, out);
     return true;
   }
 

@@ -159,11 +159,12 @@ class BruteForceTriangleSearch3D final : public ClosestPointSearch {
 };
 
 /// Facets through CGAL's AABB tree: Dim = 2, segments (embedded in the plane
-/// z = 0); Dim = 3, triangles. The closest primitive CGAL returns is
-/// confirmed among every facet whose geometry meets the box of that distance
-/// around the point, with the same projection arithmetic and tie rule as
+/// z = 0); Dim = 3, triangles. The closest primitive CGAL returns competes
+/// with every facet through its closest point (those sharing the vertex or
+/// edge it lies on) under the same projection arithmetic and tie rule as
 /// brute force, so the result is brute force's (facet, point, local
-/// coordinates). facetsNear lists the facets whose geometry meets the widened
+/// coordinates), except at an exact tie between separate parts of the
+/// surface, where CGAL's choice stands. facetsNear lists the facets whose geometry meets the widened
 /// box (a subset of the bounding-box overlaps, still a superset of the
 /// facets within the radius). The tree is rebuilt by build(): CGAL has no refit.
 template <int Dim>
