@@ -70,6 +70,41 @@ struct FacetTree {
     return true;
   }
 
+  // Facets within the radius of x (widened by round-off), in facet order: a
+  // traversal that prunes every node whose box lies farther.
+  void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
+    if (facets.empty()) return;
+    const Real r = radius * (1.0 + 1e-12) + 1e-300;
+    BallCollector collect{point(x), r * r, &out, &facets};
+    const std::size_t first = out.size();
+    tree.traversal(collect.centre, collect);
+    std::sort(out.begin() + first, out.end());
+  }
+
+  // CGAL traversal traits: the facets within sqrt(r2) of the centre.
+  struct BallCollector {
+    Point3 centre;
+    Real r2;
+    std::vector<LocalIndex>* out;
+    const std::vector<Datum>* all;
+    bool go_further() const { return true; }
+    template <class Primitive>
+    void intersection(const Point3&, const Primitive& primitive) {
+      if (CGAL::squared_distance(centre, primitive.datum()) <= r2)
+        out->push_back(LocalIndex(primitive.id() - all->cbegin()));
+    }
+    template <class Node>
+    bool do_intersect(const Point3&, const Node& node) const {
+      const CGAL::Bbox_3& b = node.bbox();
+      Real d2 = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const Real v = std::max({b.min(k) - centre[k], 0.0, centre[k] - b.max(k)});
+        d2 += v * v;
+      }
+      return d2 <= r2;
+    }
+  };
+
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const {
     if (facets.empty()) return;
     const std::size_t first = out.size();
@@ -133,6 +168,11 @@ template <int Dim>
 void AabbTreeSearch<Dim>::facetsNear(const Real* lo, const Real* hi, Real radius,
                                      std::vector<LocalIndex>& out) const {
   tree_->facetsNear(lo, hi, radius, out);
+}
+
+template <int Dim>
+void AabbTreeSearch<Dim>::facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
+  tree_->facetsNearPoint(x, radius, out);
 }
 
 template class AabbTreeSearch<2>;

@@ -178,6 +178,8 @@ class AabbTreeSearch final : public ClosestPointSearch {
   LocalIndex numFacets() const override { return LocalIndex(vertices_.size() / kStride); }
   Projection project(const Real* x, Real cutoff) const override;
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
+  /// Exactly the facets within `radius` of x (to round-off): a traversal pruned by distance.
+  void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:
   static constexpr std::size_t kStride = Dim == 2 ? 4 : 9;  ///< coordinates per facet
