@@ -27,6 +27,10 @@ struct FacetTree {
 
   std::vector<Datum> facets;
   Tree tree;
+  // Scratch of the queries (one per quadrature point and Newton iteration):
+  // kept so that a query allocates nothing once they have grown.
+  mutable std::vector<Iterator> hits;
+  mutable std::vector<LocalIndex> candidateScratch;
 
   static Point3 point(const Real* x) { return Point3(x[0], x[1], Dim == 3 ? x[2] : 0.0); }
   static CGAL::Bbox_3 box(const Real* lo, const Real* hi, Real r) {
@@ -44,7 +48,7 @@ struct FacetTree {
 
   // Facets whose geometry meets the box [lo - r, hi + r], appended unsorted.
   void intersecting(const Real* lo, const Real* hi, Real r, std::vector<LocalIndex>& out) const {
-    std::vector<Iterator> hits;
+    hits.clear();
     tree.all_intersected_primitives(box(lo, hi, r), std::back_inserter(hits));
     for (const auto& it : hits) out.push_back(LocalIndex(it - facets.cbegin()));
   }
@@ -114,22 +118,17 @@ struct FacetTree {
   }
 };
 
-// What differs between the dimensions: the CGAL datum of a facet, how the
-// facets' coordinates are copied, and the projection that decides.
+// The CGAL tree and datum of a facet, per dimension.
 template <int Dim>
-struct Facets;
+struct CgalFacets;
 template <>
-struct Facets<2> {
+struct CgalFacets<2> {
   using Tree = FacetTree<Kernel::Segment_3, CGAL::AABB_segment_primitive, 2>;
-  using Best = detail::Best;
-  static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { detail::copySegments(coords, s, v); }
   static Kernel::Segment_3 datum(const Real* v) { return {Point3(v[0], v[1], 0.0), Point3(v[2], v[3], 0.0)}; }
 };
 template <>
-struct Facets<3> {
+struct CgalFacets<3> {
   using Tree = FacetTree<Kernel::Triangle_3, CGAL::AABB_triangle_primitive, 3>;
-  using Best = detail::BestTriangle;
-  static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { detail::copyTriangles(coords, s, v); }
   static Kernel::Triangle_3 datum(const Real* v) {
     return {Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5]), Point3(v[6], v[7], v[8])};
   }
@@ -138,7 +137,7 @@ struct Facets<3> {
 }  // namespace
 
 template <int Dim>
-struct AabbTreeSearch<Dim>::Tree : Facets<Dim>::Tree {};
+struct AabbTreeSearch<Dim>::Tree : CgalFacets<Dim>::Tree {};
 
 template <int Dim>
 AabbTreeSearch<Dim>::AabbTreeSearch() : tree_(std::make_unique<Tree>()) {}
@@ -147,19 +146,20 @@ AabbTreeSearch<Dim>::~AabbTreeSearch() = default;
 
 template <int Dim>
 void AabbTreeSearch<Dim>::build(const Real* coords, const mesh::Surface& surface) {
-  Facets<Dim>::copy(coords, surface, vertices_);
+  detail::Facets<Dim>::copy(coords, surface, vertices_);
   auto t = std::make_unique<Tree>();
   t->facets.reserve(numFacets());
-  for (LocalIndex e = 0; e < numFacets(); ++e) t->facets.push_back(Facets<Dim>::datum(&vertices_[kStride * e]));
+  for (LocalIndex e = 0; e < numFacets(); ++e) t->facets.push_back(CgalFacets<Dim>::datum(&vertices_[kStride * e]));
   t->build();
   tree_ = std::move(t);
 }
 
 template <int Dim>
 Projection AabbTreeSearch<Dim>::project(const Real* x, Real cutoff) const {
-  std::vector<LocalIndex> candidates;
+  std::vector<LocalIndex>& candidates = tree_->candidateScratch;
+  candidates.clear();
   if (!tree_->candidates(x, cutoff, candidates)) return {};
-  typename Facets<Dim>::Best best;
+  typename detail::Facets<Dim>::Best best;
   for (LocalIndex e : candidates) best.consider(&vertices_[kStride * e], e, x, cutoff * cutoff);
   return best.result();
 }

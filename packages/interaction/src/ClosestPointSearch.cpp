@@ -12,50 +12,34 @@ namespace cgcm::interaction {
 using namespace detail;
 
 // ---------------------------------------------------------------------------
-// BruteForceSegmentSearch2D
+// BruteForceSearch
 
-void BruteForceSegmentSearch2D::build(const Real* coords, const mesh::Surface& surface) {
-  copySegments(coords, surface, seg_);
+template <int Dim>
+void BruteForceSearch<Dim>::build(const Real* coords, const mesh::Surface& surface) {
+  Facets<Dim>::copy(coords, surface, vertices_);
 }
 
-Projection BruteForceSegmentSearch2D::project(const Real* x, Real cutoff) const {
-  Best best;
-  const Real limit2 = cutoff * cutoff;
-  for (LocalIndex e = 0; e < numFacets(); ++e) best.consider(&seg_[4 * std::size_t(e)], e, x, limit2);
+template <int Dim>
+Projection BruteForceSearch<Dim>::project(const Real* x, Real cutoff) const {
+  typename Facets<Dim>::Best best;
+  for (LocalIndex e = 0; e < numFacets(); ++e) best.consider(&vertices_[kStride * e], e, x, cutoff * cutoff);
   return best.result();
 }
 
-void BruteForceSegmentSearch2D::facetsNear(const Real* lo, const Real* hi, Real radius,
-                                           std::vector<LocalIndex>& out) const {
-  const Real qlo[2] = {lo[0] - radius, lo[1] - radius}, qhi[2] = {hi[0] + radius, hi[1] + radius};
-  for (LocalIndex e = 0; e < numFacets(); ++e) {
-    Real blo[2], bhi[2];
-    segmentBox(&seg_[4 * e], blo, bhi);
-    if (boxesOverlap(qlo, qhi, blo, bhi)) out.push_back(e);
+template <int Dim>
+void BruteForceSearch<Dim>::facetsNear(const Real* lo, const Real* hi, Real radius,
+                                       std::vector<LocalIndex>& out) const {
+  Real qlo[3], qhi[3];
+  for (int k = 0; k < Dim; ++k) {
+    qlo[k] = lo[k] - radius;
+    qhi[k] = hi[k] + radius;
   }
-}
-
-// ---------------------------------------------------------------------------
-// BruteForceTriangleSearch3D
-
-void BruteForceTriangleSearch3D::build(const Real* coords, const mesh::Surface& surface) {
-  copyTriangles(coords, surface, tri_);
-}
-
-Projection BruteForceTriangleSearch3D::project(const Real* x, Real cutoff) const {
-  BestTriangle best;
-  const Real limit2 = cutoff * cutoff;
-  for (LocalIndex e = 0; e < numFacets(); ++e) best.consider(&tri_[9 * std::size_t(e)], e, x, limit2);
-  return best.result();
-}
-
-void BruteForceTriangleSearch3D::facetsNear(const Real* lo, const Real* hi, Real radius,
-                                            std::vector<LocalIndex>& out) const {
-  const Real qlo[3] = {lo[0] - radius, lo[1] - radius, lo[2] - radius};
-  const Real qhi[3] = {hi[0] + radius, hi[1] + radius, hi[2] + radius};
   for (LocalIndex e = 0; e < numFacets(); ++e)
-    if (triangleBoxOverlaps(&tri_[9 * std::size_t(e)], qlo, qhi)) out.push_back(e);
+    if (Facets<Dim>::boxOverlaps(&vertices_[kStride * e], qlo, qhi)) out.push_back(e);
 }
+
+template class BruteForceSearch<2>;
+template class BruteForceSearch<3>;
 
 // ---------------------------------------------------------------------------
 

@@ -126,4 +126,25 @@ inline bool triangleBoxOverlaps(const Real* t, const Real lo[3], const Real hi[3
   return true;
 }
 
+// What differs between the dimensions of the searches: how the facets'
+// coordinates are copied, the projection that decides, the bounding-box test.
+template <int Dim>
+struct Facets;
+template <>
+struct Facets<2> {
+  using Best = detail::Best;
+  static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { copySegments(coords, s, v); }
+  static bool boxOverlaps(const Real* v, const Real lo[3], const Real hi[3]) {
+    Real blo[2], bhi[2];
+    segmentBox(v, blo, bhi);
+    return boxesOverlap(lo, hi, blo, bhi);
+  }
+};
+template <>
+struct Facets<3> {
+  using Best = BestTriangle;
+  static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { copyTriangles(coords, s, v); }
+  static bool boxOverlaps(const Real* v, const Real lo[3], const Real hi[3]) { return triangleBoxOverlaps(v, lo, hi); }
+};
+
 }  // namespace cgcm::interaction::detail

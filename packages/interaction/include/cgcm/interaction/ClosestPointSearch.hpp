@@ -130,33 +130,25 @@ KOKKOS_INLINE_FUNCTION Real projectOntoTriangle(const Real x[3], const Real a[3]
   return finish(vb * denom, vc * denom, 0);
 }
 
-/// Reference implementation: loops over all segments (tests, tiny surfaces).
-class BruteForceSegmentSearch2D final : public ClosestPointSearch {
+/// Reference implementation: loops over all facets (tests, tiny surfaces);
+/// Dim = 2 segments, Dim = 3 triangles. facetsNear lists the facets whose
+/// bounding box overlaps the widened box.
+template <int Dim>
+class BruteForceSearch final : public ClosestPointSearch {
  public:
-  int dim() const override { return 2; }
+  int dim() const override { return Dim; }
   using ClosestPointSearch::build;
   void build(const Real* coords, const mesh::Surface& surface) override;
-  LocalIndex numFacets() const override { return LocalIndex(seg_.size() / 4); }
+  LocalIndex numFacets() const override { return LocalIndex(vertices_.size() / kStride); }
   Projection project(const Real* x, Real cutoff) const override;
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:
-  std::vector<Real> seg_;
+  static constexpr std::size_t kStride = Dim == 2 ? 4 : 9;  ///< coordinates per facet
+  std::vector<Real> vertices_;
 };
-
-/// Reference implementation in 3D: loops over all triangles (3-node facets).
-class BruteForceTriangleSearch3D final : public ClosestPointSearch {
- public:
-  int dim() const override { return 3; }
-  using ClosestPointSearch::build;
-  void build(const Real* coords, const mesh::Surface& surface) override;
-  LocalIndex numFacets() const override { return LocalIndex(tri_.size() / 9); }
-  Projection project(const Real* x, Real cutoff) const override;
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
-
- private:
-  std::vector<Real> tri_;  ///< a, b, c (3 coordinates each) per triangle
-};
+using BruteForceSegmentSearch2D = BruteForceSearch<2>;
+using BruteForceTriangleSearch3D = BruteForceSearch<3>;
 
 /// Facets through CGAL's AABB tree: Dim = 2, segments (embedded in the plane
 /// z = 0); Dim = 3, triangles. The closest primitive CGAL returns competes
