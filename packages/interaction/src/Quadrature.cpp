@@ -46,4 +46,34 @@ GaussRule gaussLegendreUnit(int n) {
   return rule;
 }
 
+std::vector<FacetPoint> facetQuadrature(int nodes, int n) {
+  if (nodes != 3 && nodes != 4)
+    throw InputError("facet quadrature: facets have 3 or 4 nodes, got " + std::to_string(nodes));
+  const GaussRule g = gaussLegendreUnit(n);
+  std::vector<FacetPoint> out;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      FacetPoint q;
+      if (nodes == 3) {
+        // collapsed square: (u, v) in [0, 1]^2 -> (s, t) = (u, v (1 - u)), Jacobian 1 - u
+        const Real u = g.points[i], s = u, t = g.points[j] * (1.0 - u);
+        q.N[0] = 1.0 - s - t, q.N[1] = s, q.N[2] = t;
+        q.dN[0][0] = -1.0, q.dN[0][1] = 1.0, q.dN[0][2] = 0.0;
+        q.dN[1][0] = -1.0, q.dN[1][1] = 0.0, q.dN[1][2] = 1.0;
+        q.weight = g.weights[i] * g.weights[j] * (1.0 - u);
+      } else {
+        const Real xi = 2.0 * g.points[i] - 1.0, eta = 2.0 * g.points[j] - 1.0;
+        const Real sx[4] = {-1.0, 1.0, 1.0, -1.0}, sy[4] = {-1.0, -1.0, 1.0, 1.0};
+        for (int a = 0; a < 4; ++a) {
+          q.N[a] = 0.25 * (1.0 + sx[a] * xi) * (1.0 + sy[a] * eta);
+          q.dN[0][a] = 0.25 * sx[a] * (1.0 + sy[a] * eta);
+          q.dN[1][a] = 0.25 * sy[a] * (1.0 + sx[a] * xi);
+        }
+        q.weight = 4.0 * g.weights[i] * g.weights[j];
+      }
+      out.push_back(q);
+    }
+  return out;
+}
+
 }  // namespace cgcm::interaction

@@ -27,10 +27,12 @@
 
 namespace cgcm::interaction {
 
-enum class Formulation { PlaneStrain, Axisymmetric };
+/// Kinematics of the surfaces: 2D segments (plane strain, axisymmetric) or
+/// 3D triangles and quadrilaterals (Method3Kernel3D.hpp).
+enum class Formulation { PlaneStrain, Axisymmetric, ThreeD };
 
 inline const char* formulationName(Formulation f) {
-  return f == Formulation::PlaneStrain ? "plane-strain" : "axisymmetric";
+  return f == Formulation::PlaneStrain ? "plane-strain" : f == Formulation::Axisymmetric ? "axisymmetric" : "3D";
 }
 
 /// Diagnostics of one pair evaluation.

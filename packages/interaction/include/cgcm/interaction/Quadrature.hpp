@@ -18,6 +18,21 @@ struct GaussRule {
 /// Throws InputError for n < 1.
 GaussRule gaussLegendreUnit(int n);
 
+/// Shape functions of a surface facet at one quadrature point, and its weight
+/// on the reference facet (tri3: s, t >= 0, s + t <= 1, area 1/2; quad4:
+/// [-1, 1]^2, area 4).
+struct FacetPoint {
+  Real N[4] = {};
+  Real dN[2][4] = {};  ///< dN_a/dxi_i
+  Real weight = 0.0;
+};
+
+/// Quadrature on a facet with `nodes` = 3 (triangle: the collapsed n x n
+/// Gauss rule, positive weights, exact for degree 2n - 1) or 4 (quadrilateral:
+/// the n x n tensor Gauss rule). Node order: tri3 (0,0), (1,0), (0,1); quad4
+/// (-1,-1), (1,-1), (1,1), (-1,1), counter-clockwise seen from outside.
+std::vector<FacetPoint> facetQuadrature(int nodes, int n);
+
 /// Composite Gauss-Legendre integral of f over [a, b]: `panels` equal
 /// panels of an n-point rule.
 template <class F>

@@ -1,0 +1,165 @@
+#pragma once
+// Method 3 surface kernel (eq. 21, THEORY §2) in 3D, with its exact tangent.
+//
+// Unit of work: one interaction pair = (facet e of body k with NF = 3 or 4
+// nodes, quadrature point q of e, triangle s of the surface of body l). With
+// the coordinates
+//     z = [x_1 .. x_NF of e | y_1, y_2, y_3 of s]     (3 NF + 9 entries)
+// the quadrature point is x = sum_a N_a x_a, its projection x_P on s (the
+// closest point of the triangle: inside the face, on an edge or at a vertex),
+// r = |x - x_P|, rbar = (x - x_P)/r, n the outward unit normal of e at q,
+// n = g1 x g2 / |g1 x g2| with g_i = dx/dxi_i, and
+//     f_a = N_a T(r) rbar (rbar . n) da,    da = |g1 x g2| w,
+// T(r) = beta_k beta_l Phi(r)/beta the half-space traction (the same law as
+// in 2D). f is the contribution to the internal side of f_int + f_C - f_ext;
+// the force applied to body k is -f.
+//
+// The target surface is piecewise flat: a quad4 facet of l enters the search
+// as two triangles, so a projection never needs a Newton solve on a bilinear
+// patch. The source facet keeps its bilinear geometry (normal and area
+// element of the element face).
+//
+// Tangent: K = df/dz (3 NF x (3 NF + 9)) by forward automatic
+// differentiation (Sacado::Fad::SFad) of the same residual code, with the
+// projection region held fixed (the region is where the residual is smooth;
+// across region boundaries the projection, hence f, is continuous). It is
+// exact to round-off, and the unit tests compare it with central differences.
+#include <Sacado.hpp>
+
+#include <cmath>
+
+#include "cgcm/core/Types.hpp"
+#include "cgcm/interaction/ClosestPointSearch.hpp"
+#include "cgcm/interaction/Method3Kernel.hpp"
+#include "cgcm/interaction/Quadrature.hpp"
+
+namespace cgcm::interaction {
+
+namespace detail {
+
+template <class S>
+inline S dot3(const S* a, const S* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+template <class S>
+inline void cross3(const S* a, const S* b, S* c) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/// Foot of x on triangle (a, b, c) in the region found by projectOntoTriangle
+/// (0 face, 1..3 vertex a, b, c, 4..6 edge ab, bc, ca).
+template <class S>
+inline void footInRegion(const S* x, const S* a, const S* b, const S* c, int region, S* p) {
+  auto onEdge = [&](const S* e0, const S* e1) {
+    S d[3], q[3];
+    for (int i = 0; i < 3; ++i) d[i] = e1[i] - e0[i], q[i] = x[i] - e0[i];
+    const S lam = dot3(q, d) / dot3(d, d);
+    for (int i = 0; i < 3; ++i) p[i] = e0[i] + lam * d[i];
+  };
+  switch (region) {
+    case 1: for (int i = 0; i < 3; ++i) p[i] = a[i]; return;
+    case 2: for (int i = 0; i < 3; ++i) p[i] = b[i]; return;
+    case 3: for (int i = 0; i < 3; ++i) p[i] = c[i]; return;
+    case 4: onEdge(a, b); return;
+    case 5: onEdge(b, c); return;
+    case 6: onEdge(c, a); return;
+    default: {
+      S ab[3], ac[3], m[3], q[3];
+      for (int i = 0; i < 3; ++i) ab[i] = b[i] - a[i], ac[i] = c[i] - a[i], q[i] = x[i] - a[i];
+      cross3(ab, ac, m);
+      const S h = dot3(q, m) / dot3(m, m);
+      for (int i = 0; i < 3; ++i) p[i] = x[i] - h * m[i];
+    }
+  }
+}
+
+inline Real scalarValue(Real v) { return v; }
+template <class S>
+inline Real scalarValue(const S& v) {
+  return v.val();
+}
+
+/// T(r) as an S: the law's value, and for an AD type its chain rule.
+template <class Law>
+inline Real tractionOf(const Law& law, Real r, Real& dT) {
+  Real T;
+  law(r, T, dT);
+  return T;
+}
+template <class Law, class S>
+inline S tractionOf(const Law& law, const S& r, Real& dT) {
+  Real T;
+  law(r.val(), T, dT);
+  S out(r);
+  out.val() = T;
+  for (int i = 0; i < r.size(); ++i) out.fastAccessDx(i) = dT * r.fastAccessDx(i);
+  return out;
+}
+
+/// The residual f (3 NF entries) for a fixed projection region; also the
+/// state's distance, traction and cos(alpha).
+template <int NF, class S, class Law>
+inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const Law& law, S* f, PairState& st) {
+  S x[3] = {0.0, 0.0, 0.0}, g[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+  for (int a = 0; a < NF; ++a)
+    for (int i = 0; i < 3; ++i) {
+      x[i] += q.N[a] * z[3 * a + i];
+      g[0][i] += q.dN[0][a] * z[3 * a + i];
+      g[1][i] += q.dN[1][a] * z[3 * a + i];
+    }
+  S m[3];
+  cross3(g[0], g[1], m);
+  using std::sqrt;
+  const S jac = sqrt(dot3(m, m));
+  const S* y = z + 3 * NF;
+  S p[3];
+  footInRegion(x, y, y + 3, y + 6, region, p);
+  S d[3];
+  for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i];
+  const S r = sqrt(dot3(d, d));
+  Real dT;
+  const S T = tractionOf(law, r, dT);
+  // T rbar (rbar . n) da = T d (d . m) w / r^2
+  const S s = T * dot3(d, m) * q.weight / (r * r);
+  for (int a = 0; a < NF; ++a)
+    for (int i = 0; i < 3; ++i) f[3 * a + i] = q.N[a] * s * d[i];
+  st.distance = scalarValue(r);
+  st.traction = scalarValue(T);
+  st.cosAlpha = scalarValue(dot3(d, m) / (r * jac));
+  st.region = region;
+}
+
+}  // namespace detail
+
+/// Evaluates one pair: f (3 NF entries, node-major) and, if K is not null,
+/// K[i * (3 NF + 9) + j] = df_i/dz_j. `law(r, T, dT)` gives T(r) and dT/dr.
+/// The caller checks state.distance > 0 (r = 0: the point lies on s).
+template <int NF, class Law>
+PairState method3Pair3D(const Real* z, const FacetPoint& q, const Law& law, Real* f, Real* K) {
+  constexpr int nz = 3 * NF + 9, nf = 3 * NF;
+  PairState st;
+  Real x[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < NF; ++a)
+    for (int i = 0; i < 3; ++i) x[i] += q.N[a] * z[3 * a + i];
+  Real xi[2], p[3];
+  int region = 0;
+  projectOntoTriangle(x, z + nf, z + nf + 3, z + nf + 6, xi, p, region);
+  if (K == nullptr) {
+    detail::method3Residual3D<NF>(z, q, region, law, f, st);
+    return st;
+  }
+  using Fad = Sacado::Fad::SFad<Real, nz>;
+  Fad zf[nz], ff[nf];
+  for (int j = 0; j < nz; ++j) zf[j] = Fad(nz, j, z[j]);
+  detail::method3Residual3D<NF>(zf, q, region, law, ff, st);
+  for (int i = 0; i < nf; ++i) {
+    f[i] = ff[i].val();
+    for (int j = 0; j < nz; ++j) K[i * nz + j] = ff[i].dx(j);
+  }
+  return st;
+}
+
+}  // namespace cgcm::interaction
