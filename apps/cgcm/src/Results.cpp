@@ -83,7 +83,11 @@ ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc
   all_ = Teuchos::rcp(new assembly::Vector(rootMap));
   io::ExodusVariables vars;
   for (int i = 0; i < mesh.dim; ++i) vars.nodal.push_back(kDisplacement[i]);
-  if (disc.interaction) vars.nodal.insert(vars.nodal.end(), {"traction_x", "traction_y", "pressure"});
+  if (disc.interaction) {
+    vars.nodal.insert(vars.nodal.end(), {"traction_x", "traction_y"});
+    if (mesh.dim == 3) vars.nodal.push_back("traction_z");
+    vars.nodal.push_back("pressure");
+  }
   for (const auto& c : stressComponents(disc.assembler->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
@@ -148,40 +152,66 @@ void ResultsWriter::traction(const std::vector<Real>& u, io::ExodusWriter::Field
   // The pair list is the one of the last evaluation, at this state.
   const auto& mesh = disc_.assembler->mesh();
   const auto& in = *disc_.interaction;
+  const int d = in.dim();
   const LocalIndex nn = mesh.numNodes();
   std::vector<Real> x(mesh.coords);
   for (std::size_t k = 0; k < x.size(); ++k) x[k] += u[k];
-  std::vector<Real> force(2 * std::size_t(nn), 0.0), area(nn, 0.0), normal(2 * std::size_t(nn), 0.0);
+  std::vector<Real> force(d * std::size_t(nn), 0.0), area(nn, 0.0), normal(d * std::size_t(nn), 0.0);
   interaction::PairContribution c;
   for (const auto& p : in.pairs()) {
     in.evaluatePair(x.data(), p, c, false);
-    for (int a = 0; a < 2; ++a)
-      for (int i = 0; i < 2; ++i) force[2 * std::size_t(c.rowNodes[a]) + i] -= c.f[2 * a + i];  // on the body: -f_C
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < d; ++i) force[d * std::size_t(c.rowNodes[a]) + i] -= c.f[d * a + i];  // on the body: -f_C
   }
   const bool axisymmetric = disc_.assembler->formulation() == assembly::Formulation::Axisymmetric;
   for (int b = 0; b < in.numBodies(); ++b) {
     const auto& s = in.surface(b);
+    const int npf = s.nodesPerFacet;
     for (LocalIndex f = 0; f < s.numFacets(); ++f) {
-      const LocalIndex n0 = s.facets[2 * std::size_t(f)], n1 = s.facets[2 * std::size_t(f) + 1];
-      const Real tx = x[2 * n1] - x[2 * n0], ty = x[2 * n1 + 1] - x[2 * n0 + 1];
-      const Real length = std::hypot(tx, ty);
-      // share of each node: integral of N_a (times 2 pi r in axisymmetry)
-      const Real a0 = axisymmetric ? 2.0 * M_PI * length * (2.0 * x[2 * n0] + x[2 * n1]) / 6.0 : 0.5 * length;
-      const Real a1 = axisymmetric ? 2.0 * M_PI * length * (x[2 * n0] + 2.0 * x[2 * n1]) / 6.0 : 0.5 * length;
-      area[n0] += a0, area[n1] += a1;
-      for (LocalIndex n : {n0, n1}) normal[2 * n] += ty, normal[2 * n + 1] -= tx;  // outward, length-weighted
+      const LocalIndex* n = &s.facets[std::size_t(f) * npf];
+      if (d == 2) {
+        const Real tx = x[2 * n[1]] - x[2 * n[0]], ty = x[2 * n[1] + 1] - x[2 * n[0] + 1];
+        const Real length = std::hypot(tx, ty);
+        // share of each node: integral of N_a (times 2 pi r in axisymmetry)
+        const Real a0 = axisymmetric ? 2.0 * M_PI * length * (2.0 * x[2 * n[0]] + x[2 * n[1]]) / 6.0 : 0.5 * length;
+        const Real a1 = axisymmetric ? 2.0 * M_PI * length * (x[2 * n[0]] + 2.0 * x[2 * n[1]]) / 6.0 : 0.5 * length;
+        area[n[0]] += a0, area[n[1]] += a1;
+        for (int a = 0; a < 2; ++a) normal[2 * n[a]] += ty, normal[2 * n[a] + 1] -= tx;  // outward, length-weighted
+        continue;
+      }
+      // 3D: the facet's area vector (sum of its corner triangles' for a quad), shared equally by its nodes
+      Real m[3] = {0.0, 0.0, 0.0};
+      for (int a = 1; a + 1 < npf; ++a) {
+        const Real* x0 = &x[3 * n[0]];
+        const Real* x1 = &x[3 * n[a]];
+        const Real* x2 = &x[3 * n[a + 1]];
+        const Real e1[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
+        const Real e2[3] = {x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
+        m[0] += 0.5 * (e1[1] * e2[2] - e1[2] * e2[1]);
+        m[1] += 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]);
+        m[2] += 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
+      }
+      const Real A = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+      for (int a = 0; a < npf; ++a) {
+        area[n[a]] += A / npf;
+        for (int i = 0; i < 3; ++i) normal[3 * std::size_t(n[a]) + i] += m[i];
+      }
     }
   }
-  auto& tx = nodal["traction_x"];
-  auto& ty = nodal["traction_y"];
+  const char* names[3] = {"traction_x", "traction_y", "traction_z"};
   auto& pressure = nodal["pressure"];
-  tx.assign(nn, 0.0), ty.assign(nn, 0.0), pressure.assign(nn, 0.0);
+  pressure.assign(nn, 0.0);
+  for (int i = 0; i < d; ++i) nodal[names[i]].assign(nn, 0.0);
   for (LocalIndex n = 0; n < nn; ++n) {
     if (!(area[n] > 0.0)) continue;
-    tx[n] = force[2 * n] / area[n];
-    ty[n] = force[2 * n + 1] / area[n];
-    const Real len = std::hypot(normal[2 * n], normal[2 * n + 1]);
-    if (len > 0.0) pressure[n] = -(tx[n] * normal[2 * n] + ty[n] * normal[2 * n + 1]) / len;
+    Real tn = 0.0, len2 = 0.0;
+    for (int i = 0; i < d; ++i) {
+      const Real t = force[d * std::size_t(n) + i] / area[n], m = normal[d * std::size_t(n) + i];
+      nodal[names[i]][n] = t;
+      tn += t * m;
+      len2 += m * m;
+    }
+    if (len2 > 0.0) pressure[n] = -tn / std::sqrt(len2);
   }
 }
 

@@ -307,17 +307,18 @@ int Assembler::assembleInteraction(const Vector& u, Vector::dual_view_type::t_de
   for (const auto& p : pairs) {
     if (!ownsFacet_[p.body][p.facet]) continue;  // each pair is evaluated by exactly one rank
     interaction_->evaluatePair(x.data(), p, c, J != nullptr);
-    LocalIndex rows[4], cols[2 * interaction::kMaxContributionNodes];
-    for (int a = 0; a < 2; ++a)
-      for (int i = 0; i < 2; ++i) rows[2 * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));
-    for (int r = 0; r < 4; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
+    LocalIndex rows[12], cols[interaction::kMaxContributionColumns];
+    const int nrows = dim_ * c.numRowNodes;
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < dim_; ++i) rows[dim_ * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));
+    for (int r = 0; r < nrows; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
     if (!J) continue;
-    // the point's segment and every segment its projection is blended over
-    const int ncols = 2 * c.numColNodes;
+    // the point's facet and every facet its projection is blended over
+    const int ncols = dim_ * c.numColNodes;
     for (int b = 0; b < c.numColNodes; ++b)
-      for (int j = 0; j < 2; ++j) cols[2 * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
+      for (int j = 0; j < dim_; ++j) cols[dim_ * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
     // sumIntoValues skips columns missing from the row and returns how many it found
-    for (int r = 0; r < 4; ++r)
+    for (int r = 0; r < nrows; ++r)
       dropped += ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
   }
   return dropped;

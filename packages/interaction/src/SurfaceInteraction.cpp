@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/Method3Kernel3D.hpp"
 
 namespace cgcm::interaction {
 
@@ -23,10 +24,13 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
        << " densities (one per body)";
     throw InputError(os.str());
   }
+  dim_ = options_.formulation == Formulation::ThreeD ? 3 : 2;
   for (std::size_t k = 0; k < surfaces_.size(); ++k) {
-    if (surfaces_[k].nodesPerFacet != 2 && surfaces_[k].numFacets() > 0)
-      throw InputError("surface interaction: 2D surfaces need 2 nodes per facet (body " + std::to_string(k) +
-                       " has " + std::to_string(surfaces_[k].nodesPerFacet) + ")");
+    const int npf = surfaces_[k].nodesPerFacet;
+    if (surfaces_[k].numFacets() > 0 && (dim_ == 2 ? npf != 2 : npf != 3 && npf != 4))
+      throw InputError("surface interaction: " + std::string(dim_ == 2 ? "2D surfaces need 2 nodes per facet"
+                                                                       : "3D surfaces need 3 or 4 nodes per facet") +
+                       " (body " + std::to_string(k) + " has " + std::to_string(npf) + ")");
     if (!(densities_[k] > 0.0) || !std::isfinite(densities_[k]))
       throw InputError("surface interaction: density of body " + std::to_string(k) +
                        " must be finite and > 0");
@@ -56,10 +60,28 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   summary_.cutoffTraction =
       std::isfinite(cutoff1_) ? maxProduct * std::abs(potential_->halfSpace(taperStart1_)) : 0.0;
   summary_.neglectedWorkFraction = neglectedWorkFraction(*potential_, taperStart1_, cutoff1_);
-  summary_.resultant.assign(surfaces_.size(), {0.0, 0.0});
   summary_.minDistance = std::numeric_limits<Real>::infinity();
+  summary_.resultant.assign(surfaces_.size(), {0.0, 0.0, 0.0});
   search_.resize(surfaces_.size());
-  for (auto& s : search_) s = makeClosestPointSearch(2, options_.search);
+  for (auto& s : search_) s = makeClosestPointSearch(dim_, options_.search);
+  if (dim_ == 3) {
+    for (const mesh::Surface& sk : surfaces_) {
+      mesh::Surface t;
+      t.body = sk.body;
+      t.nodesPerFacet = 3;
+      const int npf = sk.nodesPerFacet;
+      for (LocalIndex f = 0; f < sk.numFacets(); ++f) {
+        const LocalIndex* n = &sk.facets[std::size_t(f) * npf];
+        t.facets.insert(t.facets.end(), {n[0], n[1], n[2]});
+        if (npf == 4) t.facets.insert(t.facets.end(), {n[0], n[2], n[3]});
+        if (!sk.facetCells.empty()) t.facetCells.insert(t.facetCells.end(), npf == 4 ? 2 : 1, sk.facetCells[f]);
+      }
+      targets_.push_back(std::move(t));
+      facetRules_.push_back(facetQuadrature(sk.nodesPerFacet == 4 ? 4 : 3, options_.quadraturePoints));
+    }
+    return;  // the projection blend (and its neighbour table) is 2D only
+  }
+  targets_ = surfaces_;
 
   // neighbours_[l][2 s + end]: the other segment holding that node of s, if exactly one does
   neighbours_.resize(surfaces_.size());
@@ -199,15 +221,77 @@ void SurfaceInteraction::findTargets(const Real* coords, const Real x[2], int l,
   if (n > 1) ++summary_.numBlended;
 }
 
+std::vector<char> SurfaceInteraction::bodiesWithin(const Real* coords, Real radius) const {
+  const int nb = numBodies();
+  std::vector<std::array<Real, 6>> box(nb);
+  for (int k = 0; k < nb; ++k) {
+    auto& b = box[k];
+    for (int i = 0; i < 3; ++i) b[i] = std::numeric_limits<Real>::infinity(), b[3 + i] = -b[i];
+    for (LocalIndex n : surfaces_[k].facets)
+      for (int i = 0; i < dim_; ++i) {
+        const Real v = coords[std::size_t(n) * dim_ + i];
+        b[i] = std::min(b[i], v);
+        b[3 + i] = std::max(b[3 + i], v);
+      }
+  }
+  std::vector<char> near(std::size_t(nb) * nb, 0);
+  for (int k = 0; k < nb; ++k)
+    for (int l = 0; l < nb; ++l) {
+      if (k == l || surfaces_[k].numFacets() == 0 || surfaces_[l].numFacets() == 0) continue;
+      Real gap2 = 0.0;  // squared distance between the boxes
+      for (int i = 0; i < dim_; ++i) {
+        const Real g = std::max({0.0, box[k][i] - box[l][3 + i], box[l][i] - box[k][3 + i]});
+        gap2 += g * g;
+      }
+      near[std::size_t(k) * nb + l] = gap2 <= radius * radius;
+    }
+  return near;
+}
+
 void SurfaceInteraction::updatePairs(const Real* coords) {
   const int nb = numBodies();
-  for (int l = 0; l < nb; ++l) search_[l]->build(coords, surfaces_[l]);
+  const std::vector<char> near = bodiesWithin(coords, cutoff_);
+  for (int l = 0; l < nb; ++l) {
+    bool needed = false;
+    for (int k = 0; k < nb; ++k) needed = needed || near[std::size_t(k) * nb + l];
+    // a body no other comes near is not searched (an empty tree costs nothing)
+    search_[l]->build(coords, needed ? targets_[l] : mesh::Surface{l, dim_, {}, {}});
+  }
   pairs_.clear();
   summary_.numQuadraturePoints = 0;
   summary_.numPairs = 0;
   summary_.numBeyondCutoff = 0;
   summary_.numBlended = 0;
   summary_.numTruncatedBlends = 0;
+  if (dim_ == 3) {
+    for (int k = 0; k < nb; ++k) {
+      const mesh::Surface& sk = surfaces_[k];
+      const int npf = sk.nodesPerFacet;
+      const auto& rule = facetRules_[k];
+      for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
+        const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+        for (int q = 0; q < int(rule.size()); ++q) {
+          Real x[3] = {0.0, 0.0, 0.0};
+          for (int a = 0; a < npf; ++a)
+            for (int i = 0; i < 3; ++i) x[i] += rule[q].N[a] * coords[3 * std::size_t(nodes[a]) + i];
+          for (int l = 0; l < nb; ++l) {
+            if (!near[std::size_t(k) * nb + l]) continue;
+            ++summary_.numQuadraturePoints;
+            const Projection pr = search_[l]->project(x, cutoff_);
+            if (!pr.found()) {
+              ++summary_.numBeyondCutoff;
+              continue;
+            }
+            InteractionPair p{k, e, q, l};
+            p.targets[0] = pr.facet;
+            pairs_.push_back(p);
+          }
+        }
+      }
+    }
+    summary_.numPairs = LocalIndex(pairs_.size());
+    return;
+  }
   const int nq = rule_.size();
   for (int k = 0; k < nb; ++k) {
     const mesh::Surface& sk = surfaces_[k];
@@ -218,7 +302,7 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
         const Real x[2] = {(1.0 - xi) * coords[2 * std::size_t(a)] + xi * coords[2 * std::size_t(b)],
                            (1.0 - xi) * coords[2 * std::size_t(a) + 1] + xi * coords[2 * std::size_t(b) + 1]};
         for (int l = 0; l < nb; ++l) {
-          if (l == k || search_[l]->numFacets() == 0) continue;
+          if (!near[std::size_t(k) * nb + l]) continue;
           ++summary_.numQuadraturePoints;
           const Projection pr = search_[l]->project(x, cutoff_);
           if (!pr.found()) {
@@ -252,10 +336,47 @@ bool allFinite(const Real f[4]) {
 
 }  // namespace
 
+PairState SurfaceInteraction::evaluatePair3D(const Real* coords, const InteractionPair& p,
+                                             PairContribution& out, bool withTangent) const {
+  const mesh::Surface& sk = surfaces_[p.body];
+  const mesh::Surface& tl = targets_[p.otherBody];
+  const int npf = sk.nodesPerFacet;
+  out.dim = 3;
+  out.numRowNodes = npf;
+  out.numColNodes = npf + 3;
+  Real z[21];
+  for (int a = 0; a < npf; ++a) out.rowNodes[a] = out.colNodes[a] = sk.facets[std::size_t(p.facet) * npf + a];
+  for (int a = 0; a < 3; ++a) out.colNodes[npf + a] = tl.facets[3 * std::size_t(p.targets[0]) + a];
+  for (int a = 0; a < npf + 3; ++a)
+    for (int i = 0; i < 3; ++i) z[3 * a + i] = coords[3 * std::size_t(out.colNodes[a]) + i];
+  const Law law = this->law(p.body, p.otherBody);
+  const FacetPoint& q = facetRules_[p.body][p.qp];
+  Real K[12 * 21];
+  const int nz = 3 * npf + 9;
+  const PairState st = npf == 4 ? method3Pair3D<4>(z, q, law, out.f, withTangent ? K : nullptr)
+                                : method3Pair3D<3>(z, q, law, out.f, withTangent ? K : nullptr);
+  bool finite = true;
+  for (int i = 0; i < 3 * npf; ++i) finite = finite && std::isfinite(out.f[i]);
+  if (!(st.distance > 0.0) || !finite) {
+    std::ostringstream os;
+    os << "surface interaction: quadrature point " << p.qp << " of facet " << p.facet << " of body " << p.body
+       << " lies on triangle " << p.targets[0] << " of body " << p.otherBody << " (r = " << st.distance
+       << "): the surfaces touch or interpenetrate";
+    throw NumericalError(os.str());
+  }
+  if (withTangent)
+    for (int i = 0; i < 3 * npf; ++i)
+      for (int j = 0; j < nz; ++j) out.K[i][j] = K[i * nz + j];
+  return st;
+}
+
 PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p,
                                            PairContribution& out, bool withTangent) const {
+  if (dim_ == 3) return evaluatePair3D(coords, p, out, withTangent);
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& sl = surfaces_[p.otherBody];
+  out.dim = 2;
+  out.numRowNodes = 2;
   out.rowNodes[0] = out.colNodes[0] = sk.facets[2 * p.facet];
   out.rowNodes[1] = out.colNodes[1] = sk.facets[2 * p.facet + 1];
   int nc = 2;
@@ -358,7 +479,7 @@ PairState SurfaceInteraction::evaluatePair(const Real* coords, const Interaction
 }
 
 void SurfaceInteraction::beginEvaluation() {
-  summary_.resultant.assign(surfaces_.size(), {0.0, 0.0});
+  summary_.resultant.assign(surfaces_.size(), {0.0, 0.0, 0.0});
   summary_.minDistance = std::numeric_limits<Real>::infinity();
   summary_.numVertexProjections = 0;
 }
@@ -366,8 +487,8 @@ void SurfaceInteraction::beginEvaluation() {
 void SurfaceInteraction::accumulate(const InteractionPair& p, const PairState& st,
                                     const PairContribution& c) {
   auto& R = summary_.resultant[p.body];
-  R[0] -= c.f[0] + c.f[2];
-  R[1] -= c.f[1] + c.f[3];
+  for (int a = 0; a < c.numRowNodes; ++a)
+    for (int i = 0; i < c.dim; ++i) R[i] -= c.f[c.dim * a + i];
   summary_.minDistance = std::min(summary_.minDistance, st.distance);
   if (st.region != 0) ++summary_.numVertexProjections;
 }
@@ -383,37 +504,44 @@ void SurfaceInteraction::evaluate(const Real* coords, std::vector<PairContributi
 
 std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(const Real* coords,
                                                                              Real radius) const {
-  const int nb = numBodies();
+  const int nb = numBodies(), d = dim_;
+  const std::vector<char> bodies = bodiesWithin(coords, radius);
   std::vector<std::unique_ptr<ClosestPointSearch>> search(nb);
   for (int l = 0; l < nb; ++l) {
-    search[l] = makeClosestPointSearch(2, options_.search);
-    search[l]->build(coords, surfaces_[l]);
+    search[l] = makeClosestPointSearch(d, options_.search);
+    search[l]->build(coords, targets_[l]);
   }
   std::vector<std::pair<LocalIndex, LocalIndex>> out;
   std::vector<LocalIndex> near;
   for (int k = 0; k < nb; ++k) {
     const mesh::Surface& sk = surfaces_[k];
+    const int npf = sk.nodesPerFacet;
     for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
-      const LocalIndex a = sk.facets[2 * e], b = sk.facets[2 * e + 1];
-      const Real lo[2] = {std::min(coords[2 * std::size_t(a)], coords[2 * std::size_t(b)]),
-                          std::min(coords[2 * std::size_t(a) + 1], coords[2 * std::size_t(b) + 1])};
-      const Real hi[2] = {std::max(coords[2 * std::size_t(a)], coords[2 * std::size_t(b)]),
-                          std::max(coords[2 * std::size_t(a) + 1], coords[2 * std::size_t(b) + 1])};
+      const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+      Real lo[3], hi[3];
+      for (int i = 0; i < d; ++i) {
+        lo[i] = hi[i] = coords[d * std::size_t(nodes[0]) + i];
+        for (int a = 1; a < npf; ++a) {
+          lo[i] = std::min(lo[i], coords[d * std::size_t(nodes[a]) + i]);
+          hi[i] = std::max(hi[i], coords[d * std::size_t(nodes[a]) + i]);
+        }
+      }
       bool any = false;
       for (int l = 0; l < nb; ++l) {
-        if (l == k) continue;
+        if (!bodies[std::size_t(k) * nb + l]) continue;
         near.clear();
         search[l]->facetsNear(lo, hi, radius, near);
-        const mesh::Surface& sl = surfaces_[l];
+        const mesh::Surface& tl = targets_[l];
         for (LocalIndex s : near) {
           any = true;
-          for (LocalIndex row : {a, b})
-            for (int j = 0; j < 2; ++j) out.emplace_back(row, sl.facets[2 * s + j]);
+          for (int a = 0; a < npf; ++a)
+            for (int j = 0; j < tl.nodesPerFacet; ++j)
+              out.emplace_back(nodes[a], tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
         }
       }
       if (any)
-        for (LocalIndex row : {a, b})
-          for (LocalIndex col : {a, b}) out.emplace_back(row, col);
+        for (int a = 0; a < npf; ++a)
+          for (int b = 0; b < npf; ++b) out.emplace_back(nodes[a], nodes[b]);
     }
   }
   std::sort(out.begin(), out.end());

@@ -1,12 +1,19 @@
 #pragma once
-// Method 3 driver for 2D surfaces (plane strain, axisymmetric): builds the
-// interaction pair list by closest-point search and evaluates all pairs
-// into scatter-friendly element contributions. Independent of Tpetra: the
-// assembly package scatters the outputs.
+// Method 3 driver: builds the interaction pair list by closest-point search
+// and evaluates all pairs into scatter-friendly element contributions, for
+// 2D surfaces (segments; plane strain, axisymmetric) and 3D surfaces
+// (triangles and quadrilaterals). Independent of Tpetra: the assembly
+// package scatters the outputs.
 //
-// Every quadrature point of every surface segment of body k is projected
+// Every quadrature point of every surface facet of body k is projected
 // onto the surface of every other body l; the pair (k, e, q) -> (l, s) is
 // kept when the distance is <= the cutoff (pairs beyond it are counted).
+// Pairs of bodies whose surfaces' bounding boxes are farther apart than the
+// cutoff are skipped without a search. In 3D the target s is a triangle of
+// l's surface with every quad4 facet split into two triangles
+// (targetSurface(l)); the projection is onto that triangle's face, edge or
+// vertex (Method3Kernel3D.hpp), and the projection smoothing below is a 2D
+// feature (3D uses the closest triangle alone).
 // Usage per nonlinear-solver evaluation:
 //     si.updatePairs(coords);                  // search (once per evaluation)
 //     si.evaluate(coords, contributions);      // f and K of every pair
@@ -55,7 +62,9 @@ namespace cgcm::interaction {
 
 struct SurfaceInteractionOptions {
   Formulation formulation = Formulation::PlaneStrain;
-  int quadraturePoints = 4;  ///< Gauss points per segment (>= 1)
+  /// Gauss points per segment (2D) or per direction of a facet (3D: n^2 per
+  /// facet, the collapsed rule on triangles), >= 1.
+  int quadraturePoints = 4;
   /// Absolute cutoff distance r_c: quadrature points farther than r_c from
   /// the other body are skipped. <= 0 selects the default 10 r0; infinity
   /// disables pruning.
@@ -109,17 +118,24 @@ struct InteractionPair {
   LocalIndex target() const { return targets[0]; }
 };
 
+/// Columns of a contribution's tangent: 2D blends, or in 3D a quad4 facet
+/// and a target triangle (3 x 7 = 21).
+constexpr int kMaxContributionColumns = 2 * kMaxContributionNodes;
+
 /// Contribution of one pair, ready to scatter. Dof ordering is node-major,
-/// 2 components per node: f[2a + i] belongs to rowNodes[a], component i;
-/// K[2a + i][2b + j] = d f[2a + i] / d x_j(colNodes[b]), b < numColNodes.
-/// colNodes = {rowNodes[0], rowNodes[1], nodes of the targets in order,
-/// each once}: {rowNodes, target node a, target node b} for one target.
+/// dim components per node: f[dim a + i] belongs to rowNodes[a], component i;
+/// K[dim a + i][dim b + j] = d f[dim a + i] / d x_j(colNodes[b]), b < numColNodes.
+/// colNodes = {rowNodes..., nodes of the targets in order, each once}: in 2D
+/// {rowNodes, target node a, target node b} for one target; in 3D the facet's
+/// nodes, then the target triangle's three.
 struct PairContribution {
-  LocalIndex rowNodes[2];
+  int dim = 2;
+  int numRowNodes = 2;  ///< nodes of the point's facet: 2 (segment), 3 or 4
+  LocalIndex rowNodes[4];
   int numColNodes = 4;
   LocalIndex colNodes[kMaxContributionNodes];
-  Real f[4];
-  Real K[4][2 * kMaxContributionNodes];
+  Real f[12];
+  Real K[12][kMaxContributionColumns];
 };
 
 /// Counts and diagnostics of the last updatePairs / evaluate.
@@ -139,8 +155,9 @@ struct InteractionSummary {
   LocalIndex numVertexProjections = 0;  ///< pairs whose closest projection is a vertex (last evaluate)
   Real minDistance = 0.0;               ///< smallest r over the pairs (last evaluate; inf if none)
   /// Per body (index = body id): resultant of the interaction forces applied
-  /// to it, sum over its nodes of -f_C (last evaluate; components x, y).
-  std::vector<std::array<Real, 2>> resultant;
+  /// to it, sum over its nodes of -f_C (last evaluate; components x, y, z;
+  /// z = 0 in 2D). Only the pairs evaluated here: sum over ranks.
+  std::vector<std::array<Real, 3>> resultant;
 };
 
 /// Part of the work of adhesion w that a cutoff r_c with a taper from
@@ -151,7 +168,7 @@ Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real
 class SurfaceInteraction {
  public:
   /// surfaces: one per body, index = body id (mesh::Mesh::surfaces); segments
-  /// only (2D). densities: reference density beta0 per body (same size).
+  /// in 2D, triangles or quadrilaterals in 3D. densities: reference density beta0 per body (same size).
   /// Throws InputError for inconsistent arguments.
   SurfaceInteraction(std::vector<mesh::Surface> surfaces, std::vector<Real> densities,
                      std::shared_ptr<const PairPotential> potential, SurfaceInteractionOptions options = {});
@@ -161,6 +178,11 @@ class SurfaceInteraction {
   const GaussRule& quadrature() const { return rule_; }
   int numBodies() const { return int(surfaces_.size()); }
   const mesh::Surface& surface(int body) const { return surfaces_[body]; }
+  /// Spatial dimension (2 or 3): coordinates per node.
+  int dim() const { return dim_; }
+  /// The facets other bodies' points are projected onto: the surface itself
+  /// in 2D, its triangles in 3D (quad4 facet f -> triangles 2f, 2f + 1).
+  const mesh::Surface& targetSurface(int body) const { return targets_[body]; }
   Real density(int body) const { return densities_[body]; }
   /// Absolute cutoff in use (scaled by the length scale).
   Real cutoff() const { return cutoff_; }
@@ -168,8 +190,8 @@ class SurfaceInteraction {
   /// length scale; 0: closest segment only).
   Real projectionSmoothing() const { return smoothing_; }
 
-  /// Rebuilds the search structures at `coords` (2 entries per node, global
-  /// node ids) and the pair list. Call once per evaluation.
+  /// Rebuilds the search structures at `coords` (dim() entries per node,
+  /// global node ids) and the pair list. Call once per evaluation.
   void updatePairs(const Real* coords);
   void updatePairs(const std::vector<Real>& coords) { updatePairs(coords.data()); }
   const std::vector<InteractionPair>& pairs() const { return pairs_; }
@@ -265,10 +287,17 @@ class SurfaceInteraction {
   void beginEvaluation();
   void accumulate(const InteractionPair& p, const PairState& st, const PairContribution& c);
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
+  PairState evaluatePair3D(const Real* coords, const InteractionPair& p, PairContribution& out,
+                           bool withTangent) const;
+  /// Pairs of bodies (k, l) whose surfaces come within `radius` (bounding boxes).
+  std::vector<char> bodiesWithin(const Real* coords, Real radius) const;
   Real vertexPenalty(const Real* coords, int l, LocalIndex s, const Real x[2], int region, Real* grad,
                      LocalIndex* far) const;
 
   std::vector<mesh::Surface> surfaces_;
+  std::vector<mesh::Surface> targets_;                ///< searched facets (3D: triangles)
+  std::vector<std::vector<FacetPoint>> facetRules_;   ///< 3D: quadrature per body's facet kind
+  int dim_ = 2;
   std::vector<Real> densities_;
   std::shared_ptr<const PairPotential> potential_;
   SurfaceInteractionOptions options_;
