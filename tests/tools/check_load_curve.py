@@ -25,6 +25,14 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       --stopped, "stopped: ...")
   agree   A.csv B.csv --at U [U ...] [--tolerance REL] [--abs ABS]
       P of the last row at each u = U agrees between the two curves
+  bodies  BODY_FORCES.csv [--mirror A B --axis x] [--mirror-tolerance REL] [--zero x y]
+          [--zero-tolerance REL] [--balance-tolerance REL]
+      body_forces.csv: with --mirror, bodies A and B are mirror images in
+      the plane normal to --axis (that component opposite, the others equal)
+      within REL; --zero components sum to zero over the bodies within
+      --zero-tolerance; the other components' sum (the interaction's force
+      imbalance) within --balance-tolerance; all relative to the largest
+      force of any body in any state
   returns CSV --u U [--abs ABS]
       a there-and-back continuation at u = U: the last row comes back to the
       first row at u = U, |P_last - P_first| <= ABS, and P moved on the way
@@ -176,6 +184,51 @@ def returns(c, a):
     return 0 if diff <= a.abs and changed > 100 * a.abs else 1
 
 
+def bodies(a):
+    rows = list(csv.DictReader(open(a.csv)))
+    steps = {}
+    for r in rows:
+        steps.setdefault(int(r["step"]), {})[int(r["body"])] = [float(r[k]) for k in ("Fx", "Fy", "Fz")]
+    if not steps:
+        print("no rows")
+        return 1
+    axes = "xyz"
+    zero = [axes.index(c) for c in a.zero]
+    worstMirror = worstZero = worstBalance = 0.0
+    # the largest force of any body in any state: per-state scales vanish where forces change sign
+    scale = max(abs(v) for forces in steps.values() for f in forces.values() for v in f)
+    if scale == 0.0:
+        print("every force is zero")
+        return 1
+    for step, forces in steps.items():
+        if a.mirror:
+            fa, fb = forces[a.mirror[0]], forces[a.mirror[1]]
+            k = axes.index(a.axis)
+            dev = max(abs(fa[i] + fb[i]) if i == k else abs(fa[i] - fb[i]) for i in range(3))
+            worstMirror = max(worstMirror, dev / scale)
+        for i in range(3):
+            total = abs(sum(f[i] for f in forces.values())) / scale
+            if i in zero:
+                worstZero = max(worstZero, total)
+            else:
+                worstBalance = max(worstBalance, total)
+    ok = True
+    if a.mirror:
+        good = worstMirror <= a.mirror_tolerance
+        print(f"bodies {a.mirror[0]} and {a.mirror[1]} mirrored in {a.axis}: largest deviation {worstMirror:.3g} of the "
+              f"largest force (tolerance {a.mirror_tolerance:.3g})")
+        ok = ok and good
+    if zero:
+        good = worstZero <= a.zero_tolerance
+        print(f"sum over the bodies of F{','.join(a.zero)}: largest {worstZero:.3g} of the largest force (tolerance "
+              f"{a.zero_tolerance:.3g})")
+        ok = ok and good
+    good = worstBalance <= a.balance_tolerance
+    print(f"sum of the other components (the force imbalance): largest {worstBalance:.3g} of the largest force "
+          f"(tolerance {a.balance_tolerance:.3g}) over {len(steps)} states")
+    return 0 if ok and good else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -228,7 +281,17 @@ def main():
     fm.add_argument("csv")
     fm.add_argument("other")
     fm.add_argument("--tolerance", type=float, default=1e-9)
+    bd = sub.add_parser("bodies")
+    bd.add_argument("csv")
+    bd.add_argument("--mirror", type=int, nargs=2)
+    bd.add_argument("--axis", default="x", choices=["x", "y", "z"])
+    bd.add_argument("--mirror-tolerance", type=float, default=1e-9)
+    bd.add_argument("--zero", nargs="*", default=[], choices=["x", "y", "z"])
+    bd.add_argument("--zero-tolerance", type=float, default=1e-9)
+    bd.add_argument("--balance-tolerance", type=float, default=0.05)
     a = ap.parse_args()
+    if a.cmd == "bodies":
+        return bodies(a)
     if a.cmd == "agree":
         return agree(a)
     if a.cmd == "foldsmatch":

@@ -70,8 +70,8 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 }
 
 ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc,
-                             const material::NeoHookean& material, const std::vector<std::string>& globals)
-    : disc_(disc), material_(material), globals_(globals), root_(disc.dofs->comm()->getRank() == 0) {
+                             const std::vector<std::string>& globals)
+    : disc_(disc), globals_(globals), root_(disc.dofs->comm()->getRank() == 0) {
   const auto& mesh = disc.assembler->mesh();
   const auto owned = disc.dofs->ownedMap();
   std::vector<GlobalIndex> gids;
@@ -118,7 +118,6 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
     for (LocalIndex n = 0; n < mesh.numNodes(); ++n) d[n] = u[std::size_t(n) * dim + i];
   }
   const auto components = stressComponents(disc_.assembler->formulation());
-  const auto& material = material_;
   std::vector<std::vector<double>*> out;
   for (const auto& c : components) out.push_back(&element[c.name]);
   out.push_back(&element["J"]);
@@ -126,6 +125,7 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
   for (auto* o : out) o->reserve(mesh.numCells());
   using namespace fem;
   for (const auto& b : mesh.blocks) {
+    const material::NeoHookean& material = disc_.assembler->material(b.body);
     const int npc = mesh::nodesPerCell(b.type);
     for (LocalIndex c = 0; c < b.numCells(); ++c) {
       const LocalIndex* nodes = &b.connectivity[std::size_t(c) * npc];

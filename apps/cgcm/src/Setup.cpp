@@ -2,6 +2,8 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -13,6 +15,7 @@
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
+#include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
@@ -78,6 +81,20 @@ RCP<const ParameterList> validParameters() {
                "-u, the rest of its body starts translated with it), \"fixed\" (all components 0), \"axis\" and "
                "\"symmetry x|y|z\" (that component 0), \"apex\" and \"lower apex\" (one node each: the gap and "
                "contact radius columns, and u = 0 where they are r_S0 apart)");
+  geometry.set("Drive Direction", "down",
+               "Type = gmsh: the node set \"driven\" moves by u \"down\" (-y in 2D, -z in 3D) or \"up\" (+y, +z) "
+               "along the last axis; the approach closes the gap either way",
+               choices({"down", "up"}));
+  geometry.set("Driven Components", "vertical",
+               "Type = gmsh: which displacement components of \"driven\" are prescribed: \"vertical\" (the last "
+               "one; the others are free, as on the benchmark's equator) or \"all\" (the others are 0: a clamped "
+               "support that moves)",
+               choices({"vertical", "all"}));
+  geometry.set("Mirror Planes", Teuchos::Array<std::string>{},
+               "Type = gmsh: planes through the origin, among \"x\", \"y\", \"z\" (x = 0, ...), in which the mesh "
+               "is mirrored before use, e.g. {x}: the mesh file holds the half on the positive side and the model is "
+               "the whole, node for node symmetric. Bodies cut by the plane are joined with their image; the others "
+               "get an image body; \"symmetry x\" of a mirrored plane is dropped");
   geometry.sublist("Mesh Numbers", false,
                    "Type = gmsh: values for DefineConstant[] numbers of the .geo, e.g. level = 1 "
                    "(gmsh -setnumber)")
@@ -120,6 +137,13 @@ RCP<const ParameterList> validParameters() {
   material.set("Volumetric Energy", "(Lambda/2)(ln J)^2",
                "U(J): \"(Lambda/2)(ln J)^2\" (default) or \"(Lambda/4)(J^2-1-2 ln J)\"",
                choices({"(Lambda/2)(ln J)^2", "(Lambda/4)(J^2-1-2 ln J)"}));
+
+  valid->sublist("Bodies", false,
+                 "per-body materials: a sublist named after a body of the mesh (the <name> of its \"body:<name>\" "
+                 "group, or a built-in geometry's \"sphere\", \"half-space\", \"second sphere\", \"block\") "
+                 "with any of Young's Modulus, Poisson's Ratio, Volumetric Energy; the rest comes from Material. "
+                 "The interaction scales (gammaL, gammaW, the force unit) use Material's Young's modulus")
+      .disableRecursiveValidation();
 
   auto& inter = valid->sublist("Interaction", false,
                                 "Lennard-Jones interaction between the bodies (sphere geometries), THEORY sections 2, 4");
@@ -233,6 +257,7 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   s.potential = interaction::makePotential(potentialName, phys.epsilon, phys.r0);
   s.densities = {beta0, beta0};
   s.options.formulation = formulation == assembly::Formulation::Axisymmetric ? interaction::Formulation::Axisymmetric
+                          : formulation == assembly::Formulation::ThreeD     ? interaction::Formulation::ThreeD
                                                                               : interaction::Formulation::PlaneStrain;
   s.options.quadraturePoints = in.get<int>("Quadrature Points");
   s.options.cutoff = in.get<double>("Cutoff") * phys.r0;
@@ -372,6 +397,16 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
   if (g.isSublist("Mesh Numbers")) options.numbers = meshNumbers(g.sublist("Mesh Numbers"));
   auto m = std::make_shared<mesh::Mesh>(mesh::readGmsh(file, options));
   const auto fail = [&](const std::string& what) { throw InputError("mesh file \"" + file + "\": " + what); };
+  std::string mirrored;
+  for (const std::string& plane : g.get<Teuchos::Array<std::string>>("Mirror Planes")) {
+    const int axis = plane == "x" ? 0 : plane == "y" ? 1 : plane == "z" ? 2 : -1;
+    if (axis < 0 || axis >= m->dim || mirrored.find(plane) != std::string::npos)
+      throw InputError("Geometry/Mirror Planes: \"" + plane + "\" " +
+                       (axis >= 0 && axis < m->dim ? "is given twice" : "is not a plane of this mesh") +
+                       "; allowed: distinct names among " + (m->dim == 3 ? "\"x\", \"y\", \"z\"" : "\"x\", \"y\""));
+    mesh::mirror(*m, axis);
+    mirrored += plane;
+  }
   if (s.formulation == assembly::Formulation::Axisymmetric)
     for (LocalIndex n = 0; n < m->numNodes(); ++n)
       if (m->coord(n, 0) < 0.0)
@@ -396,9 +431,9 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
 
   const Real R0 = g.get<double>("Sphere Radius"), Y = s.material.youngsModulus();
   Real offset = 0.0;
+  const bool up = g.get<std::string>("Drive Direction") == "up";
+  const Real drive = up ? 1.0 : -1.0;  // displacement of "driven" along the last axis per unit u
   if (m->numBodies > 1) {
-    if (dim == 3)
-      fail("the interaction between bodies is 2D so far (plane strain, axisymmetric); a 3D mesh has one body");
     s.interaction = buildInteraction(deck.sublist("Interaction"), R0, Y, s.material.poissonRatio(), R0,
                                      s.formulation, s.report, s.forceScale);
     s.interaction->densities.assign(m->numBodies, s.interaction->densities.front());
@@ -410,16 +445,31 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
                " nodes; it must be one point");
       s.contact = ContactGeometry{"apex", "lower apex", bodyOf("apex"), bodyOf("lower apex"), rS0};
       // u = 0 where the apexes are r_S0 apart, as in the built-in benchmark
-      offset = rS0 - (m->coord(m->nodeSet("apex").front(), vertical) -
-                      m->coord(m->nodeSet("lower apex").front(), vertical));
+      // (the driven body approaches the other one as u grows)
+      const Real separation = std::abs(m->coord(m->nodeSet("apex").front(), vertical) -
+                                       m->coord(m->nodeSet("lower apex").front(), vertical));
+      offset = -drive * (rS0 - separation);
     }
     if (m->nodeSets.count("fixed")) s.balance = ForceResponse{"fixed", vertical, 1.0};
   } else {
     s.forceScale = s.formulation == assembly::Formulation::PlaneStrain ? Y * R0 : Y * R0 * R0;
   }
-  s.conditions = {{"driven", vertical, offset, -1.0}};
-  s.initialMotion = {{"driven body", vertical, offset, -1.0}};
-  s.load = {"driven", vertical, -1.0};  // P > 0: compressive
+  s.conditions = {{"driven", vertical, offset, drive}};
+  if (g.get<std::string>("Driven Components") == "all")
+    for (int i = 0; i < vertical; ++i) s.conditions.push_back({"driven", i, 0.0, 0.0});
+  s.initialMotion = {{"driven body", vertical, offset, drive}};
+  s.load = {"driven", vertical, drive};  // P > 0: compressive
+  if (dim == 3) {
+    // a quarter or half model: P is the force on the whole body
+    std::string planes;
+    for (const char* set : {"symmetry x", "symmetry y"})
+      if (m->nodeSets.count(set)) s.load.scale *= 2.0, planes += std::string(planes.empty() ? "" : ", ") + set;
+    if (s.load.scale != 1.0)
+      s.report.push_back("P = " + std::to_string(int(s.load.scale)) +
+                         " x the resultant on \"driven\": the force on the whole body of the mesh's symmetry planes (" +
+                         planes + ")");
+  }
+  if (s.balance) s.balance->scale = s.load.scale;
   if (m->nodeSets.count("fixed"))
     for (int i = 0; i < dim; ++i) s.conditions.push_back({"fixed", i, 0.0, 0.0});
   if (m->nodeSets.count("axis")) s.conditions.push_back({"axis", 0, 0.0, 0.0});
@@ -428,6 +478,143 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
     if (m->nodeSets.count(set)) s.conditions.push_back({set, i, 0.0, 0.0});
   }
   s.mesh = m;
+}
+
+// Every body must be held against rigid motion by its displacement conditions:
+// with the interaction alone its tangent is singular (or nearly: a weak
+// adhesive spring), and Newton fails without saying why. The conditions of a
+// body, evaluated on the rigid modes (translations, rotations; in axisymmetry
+// only the axial translation), must have full rank.
+void checkBodiesAreHeld(const ProblemSetup& s) {
+  const mesh::Mesh& m = *s.mesh;
+  const int dim = m.dim;
+  const bool axi = s.formulation == assembly::Formulation::Axisymmetric;
+  const int modes = axi ? 1 : dim == 2 ? 3 : 6;
+  std::vector<int> nodeBody(m.numNodes(), -1);
+  for (const auto& b : m.blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
+  // Gram matrices G_b = sum over constrained (node, component) of r r^T, r_k = (mode k at the node)_component
+  std::vector<std::array<Real, 36>> gram(m.numBodies);
+  for (auto& g : gram) g.fill(0.0);
+  Real scale = 0.0;  // the mesh's extent: rotations and translations on one footing
+  for (LocalIndex n = 0; n < m.numNodes(); ++n)
+    for (int i = 0; i < dim; ++i) scale = std::max(scale, std::abs(m.coord(n, i)));
+  if (!(scale > 0.0)) scale = 1.0;
+  for (const auto& c : s.conditions)
+    for (LocalIndex n : m.nodeSet(c.nodeSet)) {
+      Real x[3] = {0.0, 0.0, 0.0}, r[6] = {};
+      for (int i = 0; i < dim; ++i) x[i] = m.coord(n, i) / scale;
+      const int i = c.component;
+      if (axi) {
+        r[0] = i == 1 ? 1.0 : 0.0;
+      } else if (dim == 2) {  // t_x, t_y, rotation (-y, x)
+        r[0] = i == 0, r[1] = i == 1, r[2] = i == 0 ? -x[1] : x[0];
+      } else {  // t_x, t_y, t_z, w x X for w = e_x, e_y, e_z
+        const Real rot[3][3] = {{0.0, -x[2], x[1]}, {x[2], 0.0, -x[0]}, {-x[1], x[0], 0.0}};
+        for (int k = 0; k < 3; ++k) r[k] = i == k, r[3 + k] = rot[k][i];
+      }
+      auto& g = gram[nodeBody[n]];
+      for (int a = 0; a < modes; ++a)
+        for (int b = 0; b < modes; ++b) g[a * 6 + b] += r[a] * r[b];
+    }
+  for (int b = 0; b < m.numBodies; ++b) {
+    // rank of G by Gaussian elimination with full pivoting
+    auto g = gram[b];
+    Real first = 0.0;
+    int rank = 0;
+    for (int k = 0; k < modes; ++k) {
+      int pr = k, pc = k;
+      for (int i = k; i < modes; ++i)
+        for (int j = k; j < modes; ++j)
+          if (std::abs(g[i * 6 + j]) > std::abs(g[pr * 6 + pc])) pr = i, pc = j;
+      const Real pivot = g[pr * 6 + pc];
+      if (k == 0) first = std::abs(pivot);
+      if (!(std::abs(pivot) > 1e-10 * first) || first == 0.0) break;
+      for (int j = 0; j < 6; ++j) std::swap(g[k * 6 + j], g[pr * 6 + j]);
+      for (int i = 0; i < 6; ++i) std::swap(g[i * 6 + k], g[i * 6 + pc]);
+      for (int i = k + 1; i < modes; ++i) {
+        const Real f = g[i * 6 + k] / g[k * 6 + k];
+        for (int j = k; j < modes; ++j) g[i * 6 + j] -= f * g[k * 6 + j];
+      }
+      ++rank;
+    }
+    if (rank < modes) {
+      std::string name;
+      for (const auto& blk : m.blocks)
+        if (blk.body == b) {
+          name = blk.name;
+          break;
+        }
+      throw InputError("body \"" + name + "\" (body " + std::to_string(b) + ") can move as a rigid body: its "
+                       "boundary conditions hold " + std::to_string(rank) + " of its " + std::to_string(modes) +
+                       " rigid-body modes; give it a \"fixed\", \"driven\" or symmetry node set "
+                       "(meshes/README.md), or set Geometry/Driven Components = \"all\"");
+    }
+  }
+}
+
+// Bodies/<name> sublists: a material per named body, validated like Material.
+void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
+  if (!deck.isSublist("Bodies")) return;
+  const ParameterList& bodies = deck.sublist("Bodies");
+  const mesh::Mesh& m = *s.mesh;
+  std::vector<std::string> names(m.numBodies);
+  for (const auto& b : m.blocks)
+    if (names[b.body].empty()) names[b.body] = b.name;
+  std::string known;
+  for (const auto& n : names) known += (known.empty() ? "\"" : ", \"") + n + "\"";
+  std::vector<material::NeoHookean> materials(m.numBodies, s.material);
+  const ParameterList& validMaterial = validParameters()->sublist("Material");
+  for (auto it = bodies.begin(); it != bodies.end(); ++it) {
+    const std::string name = bodies.name(it);
+    if (!bodies.isSublist(name))
+      throw InputError("Bodies/" + name + ": a sublist named after a body is expected; the bodies are " + known);
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end())
+      throw InputError("Bodies/" + name + ": the mesh has no body of that name; its bodies are " + known);
+    ParameterList own = deck.sublist("Material");
+    const ParameterList& given = bodies.sublist(name);
+    for (auto p = given.begin(); p != given.end(); ++p) {
+      const std::string key = given.name(p), path = "Bodies/" + name + "/" + key;
+      if (!validMaterial.isParameter(key))
+        throw InputError(path + ": not a material parameter; allowed: Young's Modulus, Poisson's Ratio, Volumetric "
+                         "Energy");
+      const auto& valid = validMaterial.getEntry(key);
+      Teuchos::ParameterEntry entry = given.entry(p);
+      if (valid.isType<double>() && entry.isType<int>()) entry.setValue(double(entry.getValue<int>(nullptr)));
+      if (valid.isType<double>() && entry.isType<std::string>()) {  // a number given as text (command line)
+        const std::string text = entry.getValue<std::string>(nullptr);
+        std::size_t used = 0;
+        double value = 0.0;
+        try {
+          value = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size())
+          throw InputError(path + " = \"" + text + "\": a number is expected; " + valid.docString());
+        entry.setValue(value);
+      }
+      try {
+        if (!valid.validator().is_null()) valid.validator()->validate(entry, key, name);
+      } catch (const std::exception&) {
+        std::ostringstream v;
+        entry.leftshift(v, false);
+        throw InputError(path + " = " + v.str() + " is not allowed; " + valid.docString());
+      }
+      own.setEntry(key, entry);
+    }
+    const auto law = own.get<std::string>("Volumetric Energy") == "(Lambda/2)(ln J)^2"
+                         ? material::VolumetricLaw::LogSquared
+                         : material::VolumetricLaw::QuadraticJ;
+    materials[found - names.begin()] = material::NeoHookean::fromYoungPoisson(
+        own.get<double>("Young's Modulus"), own.get<double>("Poisson's Ratio"), law);
+    std::ostringstream o;
+    o << "body \"" << name << "\": Young's modulus " << own.get<double>("Young's Modulus") << ", Poisson's ratio "
+      << own.get<double>("Poisson's Ratio");
+    s.report.push_back(o.str());
+  }
+  s.bodyMaterials = std::move(materials);
 }
 
 }  // namespace
@@ -488,6 +675,8 @@ ProblemSetup buildProblem(const ParameterList& deck) {
     if (b.get<double>("Distortion") > 0.0)
       mesh::perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));
   }
+  checkBodiesAreHeld(s);
+  applyBodyMaterials(deck, s);
   return s;
 }
 
@@ -495,7 +684,9 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
   Discretization d;
   d.dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
-  d.assembler = std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.material);
+  d.assembler = setup.bodyMaterials.empty()
+                    ? std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.material)
+                    : std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.bodyMaterials);
   if (setup.interaction) {
     const auto& in = *setup.interaction;
     d.interaction =

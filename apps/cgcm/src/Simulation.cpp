@@ -44,8 +44,12 @@ class ContactProbe {
   /// contact distance from the lower surface (0 if the apex already is). Collective.
   Real contactRadius(const Vector& u) const {
     const std::vector<Real>& x = assembler_.surfaceCoordinates(u);
-    auto search = interaction::makeClosestPointSearch(2);
-    search->build(x.data(), mesh_.surfaces[c_.lowerBody]);
+    const int dim = mesh_.dim;
+    auto search = interaction::makeClosestPointSearch(dim);
+    search->build(x.data(), assembler_.interaction()->targetSurface(c_.lowerBody));
+    // radius: x (the axis is x = 0) in 2D; in 3D the distance from the vertical line through the upper apex
+    const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + assembler_.nodeValue(u, upper_, 0) : 0.0,
+                          dim == 3 ? mesh_.coord(upper_, 1) + assembler_.nodeValue(u, upper_, 1) : 0.0};
     std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of upper surface nodes
     const auto& s = mesh_.surfaces[c_.upperBody];
     std::vector<LocalIndex> nodes(s.facets);
@@ -53,9 +57,10 @@ class ContactProbe {
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     const Real reach = 20.0 * c_.contactDistance;
     for (LocalIndex n : nodes) {
-      const Real* p = &x[std::size_t(n) * 2];
+      const Real* p = &x[std::size_t(n) * dim];
       const auto proj = search->project(p, reach);
-      profile.push_back({p[0], proj.found() ? proj.distance : std::numeric_limits<Real>::infinity()});
+      const Real radius = dim == 3 ? std::hypot(p[0] - apex[0], p[1] - apex[1]) : p[0];
+      profile.push_back({radius, proj.found() ? proj.distance : std::numeric_limits<Real>::infinity()});
     }
     std::sort(profile.begin(), profile.end());
     if (profile.empty() || profile[0].second >= c_.contactDistance) return 0.0;
@@ -92,7 +97,12 @@ class Recorder {
     if (setup_.balance) columns_.push_back("P_lower");
     columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
     createOnRoot(*disc.dofs->comm(), [&] { csv_ = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns_); });
-    if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, setup.material, columns_);
+    if (disc.interaction)
+      createOnRoot(*disc.dofs->comm(), [&] {
+        bodyCsv_ = std::make_unique<io::CsvWriter>(dir + "/body_forces.csv",
+                                                   std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
+      });
+    if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, columns_);
   }
 
   /// Records the state x at parameters p; `row` carries step, flags and solver figures. Collective.
@@ -101,13 +111,14 @@ class Recorder {
     const auto& loadNodes = setup_.mesh->nodeSet(setup_.load.nodeSet);
     row.u = p[0];
     row.parameter = p[std::size_t(std::max(parameterIndex_, 0))];
-    row.P = setup_.load.sign * model_.assembler().sumOverNodes(f_, loadNodes, setup_.load.component);
+    row.P = setup_.load.sign * setup_.load.scale *
+            model_.assembler().sumOverNodes(f_, loadNodes, setup_.load.component);
     if (probe_) {
       row.gap = probe_->gap(x);
       row.contactRadius = probe_->contactRadius(x);
     }
     if (setup_.balance)
-      row.Plower = setup_.balance->sign * model_.assembler().sumOverNodes(
+      row.Plower = setup_.balance->sign * setup_.balance->scale * model_.assembler().sumOverNodes(
                                               f_, setup_.mesh->nodeSet(setup_.balance->nodeSet),
                                               setup_.balance->component);
     curve.push_back(row);
@@ -119,8 +130,12 @@ class Recorder {
     values.insert(values.end(), {double(row.newtonIterations), row.stable ? 1.0 : 0.0, row.fold ? 1.0 : 0.0,
                                  row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
     if (results_) results_->write(x, values);
+    // the interaction force on each body at this state (the evaluation above)
+    const auto forces = model_.assembler().interactionForces();  // collective; empty without interaction
     if (!root_) return;
     csv_->row(values);
+    for (std::size_t b = 0; bodyCsv_ && b < forces.size(); ++b)
+      bodyCsv_->row({double(row.step), row.u, double(b), forces[b][0], forces[b][1], forces[b][2]});
     if (!print_) return;
     char line[300];
     std::string extra;
@@ -144,7 +159,7 @@ class Recorder {
   std::ostream& log_;
   Vector f_;
   std::vector<std::string> columns_;
-  std::unique_ptr<io::CsvWriter> csv_;
+  std::unique_ptr<io::CsvWriter> csv_, bodyCsv_;
   std::unique_ptr<ResultsWriter> results_;
 };
 
@@ -368,6 +383,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (root) std::cerr << "cgcm: stopped after step " << step << ": " << e.what() << "\n";
   }
   result.curve = recorder.curve;
+  const auto graph = assembler->graph();  // collective only when it has to be built
+  const auto matrixRows = graph->getGlobalNumRows(), matrixEntries = graph->getGlobalNumEntries();
   result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   const auto& t = assembler->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
@@ -415,6 +432,10 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
                   "graph restarts = %d\n",
                   c.size(), unstable, iterations, double(iterations) / std::max<std::size_t>(1, c.size()),
                   result.continuationSteps, result.graphRestarts);
+    both(buf);
+    std::snprintf(buf, sizeof buf, "Jacobian at the end: %zu rows, %zu entries (%.1f per row)\n",
+                  std::size_t(matrixRows), std::size_t(matrixEntries),
+                  double(matrixEntries) / std::max<std::size_t>(1, matrixRows));
     both(buf);
     std::snprintf(buf, sizeof buf,
                   "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s + linear solves, NOX "

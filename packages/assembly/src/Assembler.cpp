@@ -81,8 +81,15 @@ int assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordVie
 
 Assembler::Assembler(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh,
                      Formulation formulation, const material::NeoHookean& material)
-    : dofs_(std::move(dofs)), mesh_(std::move(mesh)), formulation_(formulation), material_(material),
+    : Assembler(dofs, mesh, formulation, std::vector<material::NeoHookean>(mesh->numBodies, material)) {}
+
+Assembler::Assembler(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh,
+                     Formulation formulation, std::vector<material::NeoHookean> bodyMaterials)
+    : dofs_(std::move(dofs)), mesh_(std::move(mesh)), formulation_(formulation), materials_(std::move(bodyMaterials)),
       dim_(formulationDim(formulation)) {
+  if (int(materials_.size()) != mesh_->numBodies)
+    throw std::logic_error("Assembler: " + std::to_string(materials_.size()) + " materials for " +
+                           std::to_string(mesh_->numBodies) + " bodies");
   if (mesh_->dim != dim_)
     throw InputError(std::string("Problem/Formulation = \"") + formulationName(formulation) + "\" needs a " +
                      std::to_string(dim_) + "D mesh, got a " + std::to_string(mesh_->dim) + "D one");
@@ -99,6 +106,7 @@ Assembler::Assembler(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh
     BlockData d;
     d.type = blk.type;
     d.numNodes = nn;
+    d.material = materials_.at(blk.body);
     d.dofLids = DofView("dofLids", cells.size(), nn * dim_);
     d.X = CoordView("X", cells.size(), nn, dim_);
     for (std::size_t k = 0; k < cells.size(); ++k)
@@ -208,16 +216,16 @@ void Assembler::evaluate(const Vector& u, Vector& f, Matrix* J) {
     for (const auto& b : blocks_) {
       switch (formulation_) {
         case Formulation::PlaneStrain:
-          failures += assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, material_);
+          failures += assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, b.material);
           break;
         case Formulation::Axisymmetric:
-          failures += assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, material_);
+          failures += assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, b.material);
           break;
         case Formulation::ThreeD:
           if (b.type == mesh::CellType::Hex8)
-            failures += assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, material_);
+            failures += assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, b.material);
           else
-            failures += assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, material_);
+            failures += assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, uv, fv, Jp, b.material);
           break;
       }
     }
@@ -302,6 +310,7 @@ int Assembler::assembleInteraction(const Vector& u, Vector::dual_view_type::t_de
     colMap = J->getColMap();
   }
   const auto& pairs = interaction_->pairs();
+  bodyForces_.assign(3 * std::size_t(interaction_->numBodies()), 0.0);
   int dropped = 0;
   interaction::PairContribution c;
   for (const auto& p : pairs) {
@@ -312,6 +321,7 @@ int Assembler::assembleInteraction(const Vector& u, Vector::dual_view_type::t_de
     for (int a = 0; a < c.numRowNodes; ++a)
       for (int i = 0; i < dim_; ++i) rows[dim_ * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));
     for (int r = 0; r < nrows; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
+    for (int r = 0; r < nrows; ++r) bodyForces_[3 * std::size_t(p.body) + r % dim_] -= c.f[r];  // on the body: -f_C
     if (!J) continue;
     // the point's facet and every facet its projection is blended over
     const int ncols = dim_ * c.numColNodes;
@@ -322,6 +332,16 @@ int Assembler::assembleInteraction(const Vector& u, Vector::dual_view_type::t_de
       dropped += ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
   }
   return dropped;
+}
+
+std::vector<std::array<Real, 3>> Assembler::interactionForces() const {
+  if (!interaction_) return {};
+  std::vector<Real> local = bodyForces_, global(3 * std::size_t(interaction_->numBodies()), 0.0);
+  local.resize(global.size(), 0.0);
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
+  std::vector<std::array<Real, 3>> out(interaction_->numBodies());
+  for (std::size_t b = 0; b < out.size(); ++b) out[b] = {global[3 * b], global[3 * b + 1], global[3 * b + 2]};
+  return out;
 }
 
 Real Assembler::searchRadius() const { return interaction_ ? searchRadiusFactor_ * interaction_->cutoff() : 0.0; }

@@ -1,5 +1,6 @@
 #include "cgcm/interaction/Quadrature.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -46,31 +47,84 @@ GaussRule gaussLegendreUnit(int n) {
   return rule;
 }
 
+namespace {
+
+// Fully symmetric rules on the reference triangle (invariant under every
+// permutation of the vertices, so a facet and its mirror image, whose node
+// order is permuted, get the same points): (barycentric orbit, weight) with
+// weights summing to 1. Degree 1: centroid; 3: Strang-Fix 6 points;
+// 5: Radon 7 points. All weights positive.
+struct Orbit {
+  Real a, b, c;  ///< barycentric coordinates of one point; the orbit is their distinct permutations
+  Real weight;   ///< of each point of the orbit
+};
+
+std::vector<Orbit> symmetricTriangleRule(int degree) {
+  if (degree <= 1) return {{1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0, 1.0}};
+  if (degree <= 3) return {{0.659027622374092, 0.231933368553031, 0.109039009072877, 1.0 / 6.0}};
+  return {{1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0, 0.225},
+          {0.470142064105115, 0.470142064105115, 0.059715871789770, 0.132394152788506},
+          {0.101286507323456, 0.101286507323456, 0.797426985353087, 0.125939180544827}};
+}
+
+FacetPoint trianglePoint(Real s, Real t, Real weight) {
+  FacetPoint q;
+  q.N[0] = 1.0 - s - t, q.N[1] = s, q.N[2] = t;
+  q.dN[0][0] = -1.0, q.dN[0][1] = 1.0, q.dN[0][2] = 0.0;
+  q.dN[1][0] = -1.0, q.dN[1][1] = 0.0, q.dN[1][2] = 1.0;
+  q.weight = weight;
+  return q;
+}
+
+}  // namespace
+
 std::vector<FacetPoint> facetQuadrature(int nodes, int n) {
   if (nodes != 3 && nodes != 4)
     throw InputError("facet quadrature: facets have 3 or 4 nodes, got " + std::to_string(nodes));
   const GaussRule g = gaussLegendreUnit(n);
   std::vector<FacetPoint> out;
+  if (nodes == 3) {
+    // n points per direction ask for degree 2n - 1, as the n x n rule on a quadrilateral
+    if (n <= 3) {
+      for (const Orbit& o : symmetricTriangleRule(2 * n - 1)) {
+        const Real bary[3] = {o.a, o.b, o.c};
+        int perm[3] = {0, 1, 2};
+        std::vector<std::pair<Real, Real>> seen;
+        do {
+          const Real s = bary[perm[1]], t = bary[perm[2]];
+          bool known = false;
+          for (const auto& [s0, t0] : seen) known = known || (s0 == s && t0 == t);
+          if (known) continue;
+          seen.emplace_back(s, t);
+          out.push_back(trianglePoint(s, t, 0.5 * o.weight));  // reference area 1/2
+        } while (std::next_permutation(perm, perm + 3));
+      }
+      return out;
+    }
+    // higher orders: the collapsed (n + 1) x n Gauss rule (one more point along u for the Jacobian
+    // 1 - u), averaged over the six vertex permutations
+    const GaussRule gu = gaussLegendreUnit(n + 1);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const Real u = gu.points[i], s = u, t = g.points[j] * (1.0 - u);  // (u, v) -> (u, v (1 - u))
+        const Real bary[3] = {1.0 - s - t, s, t}, w = gu.weights[i] * g.weights[j] * (1.0 - u) / 6.0;
+        int perm[3] = {0, 1, 2};
+        do out.push_back(trianglePoint(bary[perm[1]], bary[perm[2]], w));
+        while (std::next_permutation(perm, perm + 3));
+      }
+    return out;
+  }
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       FacetPoint q;
-      if (nodes == 3) {
-        // collapsed square: (u, v) in [0, 1]^2 -> (s, t) = (u, v (1 - u)), Jacobian 1 - u
-        const Real u = g.points[i], s = u, t = g.points[j] * (1.0 - u);
-        q.N[0] = 1.0 - s - t, q.N[1] = s, q.N[2] = t;
-        q.dN[0][0] = -1.0, q.dN[0][1] = 1.0, q.dN[0][2] = 0.0;
-        q.dN[1][0] = -1.0, q.dN[1][1] = 0.0, q.dN[1][2] = 1.0;
-        q.weight = g.weights[i] * g.weights[j] * (1.0 - u);
-      } else {
-        const Real xi = 2.0 * g.points[i] - 1.0, eta = 2.0 * g.points[j] - 1.0;
-        const Real sx[4] = {-1.0, 1.0, 1.0, -1.0}, sy[4] = {-1.0, -1.0, 1.0, 1.0};
-        for (int a = 0; a < 4; ++a) {
-          q.N[a] = 0.25 * (1.0 + sx[a] * xi) * (1.0 + sy[a] * eta);
-          q.dN[0][a] = 0.25 * sx[a] * (1.0 + sy[a] * eta);
-          q.dN[1][a] = 0.25 * sy[a] * (1.0 + sx[a] * xi);
-        }
-        q.weight = 4.0 * g.weights[i] * g.weights[j];
+      const Real xi = 2.0 * g.points[i] - 1.0, eta = 2.0 * g.points[j] - 1.0;
+      const Real sx[4] = {-1.0, 1.0, 1.0, -1.0}, sy[4] = {-1.0, -1.0, 1.0, 1.0};
+      for (int a = 0; a < 4; ++a) {
+        q.N[a] = 0.25 * (1.0 + sx[a] * xi) * (1.0 + sy[a] * eta);
+        q.dN[0][a] = 0.25 * sx[a] * (1.0 + sy[a] * eta);
+        q.dN[1][a] = 0.25 * sy[a] * (1.0 + sx[a] * xi);
       }
+      q.weight = 4.0 * g.weights[i] * g.weights[j];
       out.push_back(q);
     }
   return out;

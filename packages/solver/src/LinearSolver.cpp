@@ -22,7 +22,7 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   auto types = Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>(
       kTypes[0], kTypes[1], kTypes[2], kTypes[3], kTypes[4])));
   valid->set("Type", "auto",
-             "auto: Amesos2 KLU2 on one rank, Belos GMRES + Ifpack2 on several; or Amesos2 KLU2 (one rank "
+             "auto: in 2D Amesos2 KLU2 on one rank, Belos GMRES + Ifpack2 on several; in 3D Belos GMRES + MueLu; or Amesos2 KLU2 (one rank "
              "only), Belos GMRES + Ifpack2, Belos GMRES + MueLu, Stratimikos (use the Stratimikos sublist as is)",
              types);
   auto positive = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
@@ -44,7 +44,10 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::Parame
                                                           int dofsPerNode) {
   std::string type = settings.get<std::string>("Type");
   if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
-  if (type == "auto") type = numRanks == 1 ? "Amesos2 KLU2" : "Belos GMRES + Ifpack2";
+  // 3D (3 dofs per node): MueLu. Measured on the tetrahedral quarter sphere on half-space (5.9k dofs, one
+  // rank): 0.32 s per solve against 1.1 s for KLU2 and 4 s for GMRES + RILUK(2).
+  if (type == "auto")
+    type = dofsPerNode == 3 ? "Belos GMRES + MueLu" : numRanks == 1 ? "Amesos2 KLU2" : "Belos GMRES + Ifpack2";
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Stratimikos"));
   if (type == "Amesos2 KLU2") {
     if (numRanks > 1)

@@ -116,3 +116,30 @@ TEST(Method3Kernel3D, ParallelFacesCarryTheHalfSpaceTraction) {
   for (const FacetPoint& q : facetQuadrature(3, 3)) area += q.weight;
   EXPECT_NEAR(area, 0.5, 1e-15);
 }
+
+TEST(FacetQuadrature, TriangleRulesAreSymmetricAndExact) {
+  // integral of s^i t^j over the reference triangle = i! j! / (i + j + 2)!
+  auto exact = [](int i, int j) {
+    return std::tgamma(i + 1.0) * std::tgamma(j + 1.0) / std::tgamma(i + j + 3.0);
+  };
+  for (int n = 1; n <= 5; ++n) {
+    const auto rule = facetQuadrature(3, n);
+    for (int i = 0; i <= 2 * n - 1; ++i)
+      for (int j = 0; i + j <= 2 * n - 1; ++j) {
+        Real sum = 0.0;
+        for (const auto& q : rule) {
+          EXPECT_GT(q.weight, 0.0);
+          sum += q.weight * std::pow(q.N[1], i) * std::pow(q.N[2], j);
+        }
+        EXPECT_NEAR(sum, exact(i, j), 1e-14) << "n = " << n << ", s^" << i << " t^" << j;
+      }
+    // swapping two vertices maps the rule onto itself
+    for (const auto& q : rule) {
+      bool found = false;
+      for (const auto& p : rule)
+        found = found || (std::abs(p.N[1] - q.N[2]) < 1e-15 && std::abs(p.N[2] - q.N[1]) < 1e-15 &&
+                          std::abs(p.weight - q.weight) < 1e-16);
+      EXPECT_TRUE(found) << "n = " << n;
+    }
+  }
+}

@@ -8,6 +8,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
+#include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
 
 namespace cgcm::mesh {
@@ -252,6 +253,66 @@ TEST(Overlap, FindsNodesInsideCellsAndCrossingBoundaries) {
   append(slab, box(b), "b ");
   const std::string through = findBodyOverlap(slab);
   EXPECT_NE(through.find("cross"), std::string::npos) << through;
+}
+
+}  // namespace
+}  // namespace cgcm::mesh
+
+namespace cgcm::mesh {
+namespace {
+
+TEST(Mirror, JoinsBodiesOnThePlaneAndKeepsOrientation) {
+  for (bool tets : {false, true}) {
+    BoxSpec spec;
+    spec.lx = 1.0, spec.ly = 2.0, spec.lz = 1.5, spec.nx = 3, spec.ny = 2, spec.nz = 2, spec.tetrahedra = tets;
+    Mesh m = box(spec);
+    m.nodeSets["symmetry x"] = m.nodeSets.at("xmin");
+    const LocalIndex nodes = m.numNodes(), onPlane = LocalIndex(m.nodeSet("xmin").size());
+    const LocalIndex cells = m.numCells(), facets = m.surfaces[0].numFacets();
+    mirror(m, 0);
+    EXPECT_EQ(m.numNodes(), 2 * nodes - onPlane);
+    EXPECT_EQ(m.numCells(), 2 * cells);
+    EXPECT_EQ(m.numBodies, 1);
+    EXPECT_EQ(m.nodeSets.count("symmetry x"), 0u);
+    // the plane's facets are interior now: 2 (ny nz) of them (x2 for triangles) leave
+    const LocalIndex planeFacets = LocalIndex(spec.ny * spec.nz * (tets ? 2 : 1));
+    EXPECT_EQ(m.surfaces[0].numFacets(), 2 * (facets - planeFacets));
+    const double volume = 2.0 * spec.lx * spec.ly * spec.lz;
+    // outward facets of the mirrored surface, and cells that kept their orientation (their own
+    // exterior facets, rebuilt from the cells, give the same flux)
+    EXPECT_NEAR(surfaceFlux(m, 0), 3.0 * volume, 1e-12);
+    Mesh rebuilt = m;
+    buildSurfaces(rebuilt);
+    EXPECT_EQ(rebuilt.surfaces[0].numFacets(), m.surfaces[0].numFacets());
+    EXPECT_NEAR(surfaceFlux(rebuilt, 0), 3.0 * volume, 1e-12);
+    if (tets) {
+      const auto [total, smallest] = cellMeasures(m);
+      EXPECT_NEAR(total, volume, 1e-12);
+      EXPECT_GT(smallest, 0.0);
+    }
+    // node sets hold both halves: xmax and its image
+    EXPECT_EQ(m.nodeSet("xmax").size(), 2 * m.nodeSet("xmin").size());
+  }
+}
+
+TEST(Mirror, BodiesOffThePlaneGetAnImageBody) {
+  BoxSpec spec;
+  spec.x0 = 1.0, spec.nx = spec.ny = spec.nz = 2;
+  Mesh m = box(spec);
+  mirror(m, 0);
+  ASSERT_EQ(m.numBodies, 2);
+  EXPECT_EQ(m.blocks[1].body, 1);
+  EXPECT_EQ(m.blocks[1].name, "block mirrored in x");
+  EXPECT_NEAR(surfaceFlux(m, 1), 3.0, 1e-12);
+  EXPECT_EQ(m.surfaces[1].numFacets(), m.surfaces[0].numFacets());
+  EXPECT_TRUE(findBodyOverlap(m).empty());
+}
+
+TEST(Mirror, RejectsNodesOnTheNegativeSide) {
+  BoxSpec spec;
+  spec.x0 = -0.5;
+  Mesh m = box(spec);
+  EXPECT_THROW(mirror(m, 0), InputError);
 }
 
 }  // namespace

@@ -28,9 +28,9 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 class ResultsWriter {
  public:
   /// Creates `path` on rank 0 with the mesh of `disc` and the global
-  /// variables `globals`. Throws InputError (rank 0) if it cannot be created. Collective.
-  ResultsWriter(const std::string& path, const Discretization& disc, const material::NeoHookean& material,
-                const std::vector<std::string>& globals);
+  /// variables `globals` (stresses with the assembler's material of each
+  /// body). Throws InputError (rank 0) if it cannot be created. Collective.
+  ResultsWriter(const std::string& path, const Discretization& disc, const std::vector<std::string>& globals);
 
   /// Appends the state x with the globals' values (in the constructor's
   /// order) as step time = number of the step, flushed. Collective.
@@ -42,7 +42,6 @@ class ResultsWriter {
   void traction(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal) const;
 
   const Discretization& disc_;
-  material::NeoHookean material_;
   std::vector<std::string> globals_;
   bool root_;
   Teuchos::RCP<const assembly::Import> gather_;

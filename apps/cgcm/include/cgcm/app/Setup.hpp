@@ -24,11 +24,13 @@ struct DisplacementCondition {
   Real scale;
 };
 
-/// A resultant force: sign * sum of the internal force over a node set.
+/// A resultant force: sign * scale * sum of the internal force over a node
+/// set (scale: 2 per symmetry plane of a 3D mesh, for the whole body's force).
 struct ForceResponse {
   std::string nodeSet;
   int component;
   Real sign;
+  Real scale = 1.0;
 };
 
 /// The interaction between the bodies (Method 3) and its scales.
@@ -51,7 +53,9 @@ struct ContactGeometry {
 struct ProblemSetup {
   std::shared_ptr<mesh::Mesh> mesh;
   assembly::Formulation formulation;
-  material::NeoHookean material;
+  material::NeoHookean material;  ///< the deck's Material: every body's unless bodyMaterials says otherwise
+  /// Per body (index = body id): Material overridden by Bodies/<name>; empty: `material` everywhere.
+  std::vector<material::NeoHookean> bodyMaterials;
   std::vector<DisplacementCondition> conditions;
   ForceResponse load;  ///< the "P" column of the load curve
   /// Initial guess at the start of the load path: these displacements (scaled

@@ -6,6 +6,7 @@
 // adds; Tpetra then sums shared rows into their owners. The matrix graph is
 // the union of the cell cliques and optional extra node couplings (interaction
 // pairs), which may be replaced between solves.
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -44,8 +45,14 @@ struct GraphOutdatedError : NumericalError {
 
 class Assembler {
  public:
+  /// One material for every body, or (bodyMaterials) one per body (index = body id).
   Assembler(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
             const material::NeoHookean& material);
+  Assembler(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
+            std::vector<material::NeoHookean> bodyMaterials);
+
+  /// The material of a body.
+  const material::NeoHookean& material(int body) const { return materials_.at(body); }
 
   const DofMap& dofs() const { return *dofs_; }
   const mesh::Mesh& mesh() const { return *mesh_; }
@@ -90,6 +97,11 @@ class Assembler {
 
   const AssemblyTimings& timings() const { return timings_; }
 
+  /// Per body: the resultant of the interaction forces applied to it (x, y,
+  /// z; z = 0 in 2D) at the state of the last evaluation, summed over ranks.
+  /// Collective. Empty without interaction.
+  std::vector<std::array<Real, 3>> interactionForces() const;
+
   /// Component `component` of `v` at `node`, on every rank (collective).
   Real nodeValue(const Vector& v, LocalIndex node, int component) const;
 
@@ -104,13 +116,14 @@ class Assembler {
   Teuchos::RCP<const DofMap> dofs_;
   std::shared_ptr<const mesh::Mesh> mesh_;
   Formulation formulation_;
-  material::NeoHookean material_;
+  std::vector<material::NeoHookean> materials_;  ///< per body
   int dim_;
 
   // per block: this rank's cells, their overlap dof ids and reference coordinates
   struct BlockData {
     mesh::CellType type;
     int numNodes;
+    material::NeoHookean material;
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> dofLids;  // [cell][a*dim+i], overlap local ids
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> colLids;  // [cell][a*dim+i], matrix column ids
     Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i]
@@ -134,6 +147,7 @@ class Assembler {
   Teuchos::RCP<Vector> uSurface_;
   std::vector<Real> coords_;                  ///< mesh-wide current coordinates of surface nodes
   std::vector<interaction::PairContribution> pairScratch_;
+  std::vector<Real> bodyForces_;  ///< [3 body + i]: this rank's pairs' forces on the bodies, last evaluation
 
   Teuchos::RCP<Vector> uOverlap_, fOverlap_;
   Teuchos::RCP<const Export> exporter_;

@@ -27,10 +27,14 @@ struct FacetPoint {
   Real weight = 0.0;
 };
 
-/// Quadrature on a facet with `nodes` = 3 (triangle: the collapsed n x n
-/// Gauss rule, positive weights, exact for degree 2n - 1) or 4 (quadrilateral:
-/// the n x n tensor Gauss rule). Node order: tri3 (0,0), (1,0), (0,1); quad4
-/// (-1,-1), (1,-1), (1,1), (-1,1), counter-clockwise seen from outside.
+/// Quadrature on a facet with `nodes` = 3 or 4 and n points per direction,
+/// exact for degree 2n - 1. Triangles: rules invariant under every
+/// permutation of the vertices (a facet and its mirror image get mirrored
+/// points): n = 1 the centroid, 2 Strang-Fix (6 points), 3 Radon (7 points),
+/// n >= 4 the collapsed (n + 1) x n Gauss rule averaged over the six vertex
+/// permutations; all weights positive. Quadrilaterals: the n x n tensor Gauss
+/// rule. Node order: tri3 (0,0), (1,0), (0,1); quad4 (-1,-1), (1,-1), (1,1),
+/// (-1,1), counter-clockwise seen from outside.
 std::vector<FacetPoint> facetQuadrature(int nodes, int n);
 
 /// Composite Gauss-Legendre integral of f over [a, b]: `panels` equal
