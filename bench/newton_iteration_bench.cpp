@@ -14,7 +14,7 @@
 #include <iostream>
 #include <string>
 
-#include "cgcm/assembly/Assembler.hpp"
+#include "cgcm/assembly/Problem.hpp"
 #include "cgcm/assembly/Dirichlet.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   }
   const int dim = assembly::formulationDim(form);
   auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *mesh, dim));
-  assembly::Assembler assembler(dofs, mesh, form, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
+  assembly::Problem problem(dofs, mesh, form, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
   assembly::DirichletConditions bc(dofs);
   for (const auto& [set, c] : fixed) bc.add(mesh->nodeSet(set), c, 0.0, 0.0);
   bc.add(mesh->nodeSet(loaded), dim - 1, 0.0, 1.0);
@@ -79,17 +79,17 @@ int main(int argc, char** argv) {
     }
   }
   bc.impose(load, u);
-  auto J = assembler.createMatrix();
+  auto J = problem.createMatrix();
 
   double tRes = 1e30, tJac = 1e30, tBc = 1e30, tSolve = 1e30;
   for (int r = 0; r < repeats; ++r) {
     comm->barrier();
     auto t = Clock::now();
-    assembler.evaluate(u, f, nullptr);
+    problem.evaluate(u, f, nullptr);
     comm->barrier();
     tRes = std::min(tRes, since(t));
     t = Clock::now();
-    assembler.evaluate(u, f, J.get());
+    problem.evaluate(u, f, J.get());
     comm->barrier();
     tJac = std::min(tJac, since(t));
     t = Clock::now();

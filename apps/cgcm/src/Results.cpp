@@ -72,7 +72,7 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc,
                              const std::vector<std::string>& globals)
     : disc_(disc), globals_(globals), root_(disc.dofs->comm()->getRank() == 0) {
-  const auto& mesh = disc.assembler->mesh();
+  const auto& mesh = disc.problem->mesh();
   const auto owned = disc.dofs->ownedMap();
   std::vector<GlobalIndex> gids;
   if (root_)
@@ -88,7 +88,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc
     if (mesh.dim == 3) vars.nodal.push_back("traction_z");
     vars.nodal.push_back("pressure");
   }
-  for (const auto& c : stressComponents(disc.assembler->formulation())) vars.element.push_back(c.name);
+  for (const auto& c : stressComponents(disc.problem->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
   createOnRoot(*disc.dofs->comm(), [&] { writer_ = std::make_unique<io::ExodusWriter>(path, "cgcm", mesh, vars); });
@@ -110,14 +110,14 @@ void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& 
 
 void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
                                           io::ExodusWriter::Fields& element) const {
-  const auto& mesh = disc_.assembler->mesh();
+  const auto& mesh = disc_.problem->mesh();
   const int dim = mesh.dim;
   for (int i = 0; i < dim; ++i) {
     auto& d = nodal[kDisplacement[i]];
     d.resize(mesh.numNodes());
     for (LocalIndex n = 0; n < mesh.numNodes(); ++n) d[n] = u[std::size_t(n) * dim + i];
   }
-  const auto components = stressComponents(disc_.assembler->formulation());
+  const auto components = stressComponents(disc_.problem->formulation());
   std::vector<std::vector<double>*> out;
   for (const auto& c : components) out.push_back(&element[c.name]);
   out.push_back(&element["J"]);
@@ -125,14 +125,14 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
   for (auto* o : out) o->reserve(mesh.numCells());
   using namespace fem;
   for (const auto& b : mesh.blocks) {
-    const material::NeoHookean& material = disc_.assembler->material(b.body);
+    const material::NeoHookean& material = disc_.problem->material(b.body);
     const int npc = mesh::nodesPerCell(b.type);
     for (LocalIndex c = 0; c < b.numCells(); ++c) {
       const LocalIndex* nodes = &b.connectivity[std::size_t(c) * npc];
       Mat3 s;
       Real J = 0.0;
       bool ok = false;
-      switch (disc_.assembler->formulation()) {
+      switch (disc_.problem->formulation()) {
         case assembly::Formulation::PlaneStrain: ok = cellStress<PlaneStrainQuad4>(mesh, nodes, u, material, s, J); break;
         case assembly::Formulation::Axisymmetric: ok = cellStress<AxisymmetricQuad4>(mesh, nodes, u, material, s, J); break;
         case assembly::Formulation::ThreeD:
@@ -150,7 +150,7 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
 
 void ResultsWriter::traction(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal) const {
   // The pair list is the one of the last evaluation, at this state.
-  const auto& mesh = disc_.assembler->mesh();
+  const auto& mesh = disc_.problem->mesh();
   const auto& in = *disc_.interaction;
   const int d = in.dim();
   const LocalIndex nn = mesh.numNodes();
@@ -163,7 +163,7 @@ void ResultsWriter::traction(const std::vector<Real>& u, io::ExodusWriter::Field
     for (int a = 0; a < c.numRowNodes; ++a)
       for (int i = 0; i < d; ++i) force[d * std::size_t(c.rowNodes[a]) + i] -= c.f[d * a + i];  // on the body: -f_C
   }
-  const bool axisymmetric = disc_.assembler->formulation() == assembly::Formulation::Axisymmetric;
+  const bool axisymmetric = disc_.problem->formulation() == assembly::Formulation::Axisymmetric;
   for (int b = 0; b < in.numBodies(); ++b) {
     const auto& s = in.surface(b);
     const int npf = s.nodesPerFacet;

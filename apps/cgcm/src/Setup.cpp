@@ -583,17 +583,11 @@ void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
       Teuchos::ParameterEntry entry = given.entry(p);
       if (valid.isType<double>() && entry.isType<int>()) entry.setValue(double(entry.getValue<int>(nullptr)));
       if (valid.isType<double>() && entry.isType<std::string>()) {  // a number given as text (command line)
-        const std::string text = entry.getValue<std::string>(nullptr);
-        std::size_t used = 0;
-        double value = 0.0;
         try {
-          value = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
+          entry.setValue(io::parseDouble(path, entry.getValue<std::string>(nullptr)));
+        } catch (const InputError& e) {
+          throw InputError(std::string(e.what()) + "; " + valid.docString());
         }
-        if (used == 0 || used != text.size())
-          throw InputError(path + " = \"" + text + "\": a number is expected; " + valid.docString());
-        entry.setValue(value);
       }
       try {
         if (!valid.validator().is_null()) valid.validator()->validate(entry, key, name);
@@ -684,14 +678,14 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
   Discretization d;
   d.dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
-  d.assembler = setup.bodyMaterials.empty()
-                    ? std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.material)
-                    : std::make_shared<assembly::Assembler>(d.dofs, setup.mesh, setup.formulation, setup.bodyMaterials);
+  d.problem = setup.bodyMaterials.empty()
+                    ? std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.material)
+                    : std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.bodyMaterials);
   if (setup.interaction) {
     const auto& in = *setup.interaction;
     d.interaction =
         std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities, in.potential, in.options);
-    d.assembler->setInteraction(d.interaction, in.searchRadiusFactor);
+    d.problem->setInteraction(d.interaction, in.searchRadiusFactor);
   }
   d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
   for (const auto& c : setup.conditions)
@@ -715,7 +709,7 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
                             interaction->setLengthScale(gammaL0 / gammaL);
                           }});
   }
-  d.model = Teuchos::rcp(new solver::ModelEvaluator(d.assembler, d.dirichlet, std::move(linearSolver),
+  d.model = Teuchos::rcp(new solver::ModelEvaluator(d.problem, d.dirichlet, std::move(linearSolver),
                                                     std::move(parameters)));
   return d;
 }

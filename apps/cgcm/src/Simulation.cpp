@@ -30,26 +30,26 @@ namespace {
 // Gap on the axis and contact radius of a two-body contact state.
 class ContactProbe {
  public:
-  ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Assembler& a)
-      : c_(c), mesh_(m), assembler_(a), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)) {}
+  ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& a)
+      : c_(c), mesh_(m), problem_(a), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)) {}
 
   /// Distance along the axis between the apex nodes. Collective.
   Real gap(const Vector& u) const {
     const int y = mesh_.dim - 1;
-    return (mesh_.coord(upper_, y) + assembler_.nodeValue(u, upper_, y)) -
-           (mesh_.coord(lower_, y) + assembler_.nodeValue(u, lower_, y));
+    return (mesh_.coord(upper_, y) + problem_.nodeValue(u, upper_, y)) -
+           (mesh_.coord(lower_, y) + problem_.nodeValue(u, lower_, y));
   }
 
   /// Radial position where the upper surface is first farther than the
   /// contact distance from the lower surface (0 if the apex already is). Collective.
   Real contactRadius(const Vector& u) const {
-    const std::vector<Real>& x = assembler_.surfaceCoordinates(u);
+    const std::vector<Real>& x = problem_.surfaceCoordinates(u);
     const int dim = mesh_.dim;
     auto search = interaction::makeClosestPointSearch(dim);
-    search->build(x.data(), assembler_.interaction()->targetSurface(c_.lowerBody));
+    search->build(x.data(), problem_.interaction()->targetSurface(c_.lowerBody));
     // radius: x (the axis is x = 0) in 2D; in 3D the distance from the vertical line through the upper apex
-    const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + assembler_.nodeValue(u, upper_, 0) : 0.0,
-                          dim == 3 ? mesh_.coord(upper_, 1) + assembler_.nodeValue(u, upper_, 1) : 0.0};
+    const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + problem_.nodeValue(u, upper_, 0) : 0.0,
+                          dim == 3 ? mesh_.coord(upper_, 1) + problem_.nodeValue(u, upper_, 1) : 0.0};
     std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of upper surface nodes
     const auto& s = mesh_.surfaces[c_.upperBody];
     std::vector<LocalIndex> nodes(s.facets);
@@ -77,7 +77,7 @@ class ContactProbe {
  private:
   ContactGeometry c_;
   const mesh::Mesh& mesh_;
-  assembly::Assembler& assembler_;
+  assembly::Problem& problem_;
   LocalIndex upper_, lower_;
 };
 
@@ -112,13 +112,13 @@ class Recorder {
     row.u = p[0];
     row.parameter = p[std::size_t(std::max(parameterIndex_, 0))];
     row.P = setup_.load.sign * setup_.load.scale *
-            model_.assembler().sumOverNodes(f_, loadNodes, setup_.load.component);
+            model_.problem().sumOverNodes(f_, loadNodes, setup_.load.component);
     if (probe_) {
       row.gap = probe_->gap(x);
       row.contactRadius = probe_->contactRadius(x);
     }
     if (setup_.balance)
-      row.Plower = setup_.balance->sign * setup_.balance->scale * model_.assembler().sumOverNodes(
+      row.Plower = setup_.balance->sign * setup_.balance->scale * model_.problem().sumOverNodes(
                                               f_, setup_.mesh->nodeSet(setup_.balance->nodeSet),
                                               setup_.balance->component);
     curve.push_back(row);
@@ -131,7 +131,7 @@ class Recorder {
                                  row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
     if (results_) results_->write(x, values);
     // the interaction force on each body at this state (the evaluation above)
-    const auto forces = model_.assembler().interactionForces();  // collective; empty without interaction
+    const auto forces = model_.problem().interactionForces();  // collective; empty without interaction
     if (!root_) return;
     csv_->row(values);
     for (std::size_t b = 0; bodyCsv_ && b < forces.size(); ++b)
@@ -256,12 +256,12 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   });
 
   const Discretization disc = discretize(comm, setup, linearSolver);
-  const auto& assembler = disc.assembler;
+  const auto& problem = disc.problem;
   const auto& model = disc.model;
   solver::NewtonSolver newton(model, newtonSettings);
   solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
   std::unique_ptr<ContactProbe> probe;
-  if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *setup.mesh, *assembler);
+  if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *setup.mesh, *problem);
   const int parameterIndex = model->parameterIndex(plan.parameter);
 
   if (root && printSteps) {
@@ -317,7 +317,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   };
 
   auto runStart = std::chrono::steady_clock::now();
-  const assembly::AssemblyTimings timingsBefore = assembler->timings();
+  const assembly::AssemblyTimings timingsBefore = problem->timings();
   try {
     if (!plan.arcLength) {
       solver::LoadStepper stepper(model, newton, plan.path, &continuation);
@@ -383,10 +383,10 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (root) std::cerr << "cgcm: stopped after step " << step << ": " << e.what() << "\n";
   }
   result.curve = recorder.curve;
-  const auto graph = assembler->graph();  // collective only when it has to be built
+  const auto graph = problem->graph();  // collective only when it has to be built
   const auto matrixRows = graph->getGlobalNumRows(), matrixEntries = graph->getGlobalNumEntries();
   result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
-  const auto& t = assembler->timings();
+  const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
   result.interactionSeconds = t.interaction - timingsBefore.interaction;
 

@@ -263,57 +263,43 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
   summary_.numBeyondCutoff = 0;
   summary_.numBlended = 0;
   summary_.numTruncatedBlends = 0;
-  if (dim_ == 3) {
-    for (int k = 0; k < nb; ++k) {
-      const mesh::Surface& sk = surfaces_[k];
-      const int npf = sk.nodesPerFacet;
-      const auto& rule = facetRules_[k];
-      for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
-        const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+  // every other body near k: the closest point of the quadrature point x of facet e, q
+  auto searchFrom = [&](int k, LocalIndex e, int q, const Real* x) {
+    for (int l = 0; l < nb; ++l) {
+      if (!near[std::size_t(k) * nb + l]) continue;
+      ++summary_.numQuadraturePoints;
+      const Projection pr = search_[l]->project(x, cutoff_);
+      if (!pr.found()) {
+        ++summary_.numBeyondCutoff;
+        continue;
+      }
+      InteractionPair p{k, e, q, l};
+      p.targets[0] = pr.facet;
+      if (dim_ == 2 && smoothing_ > 0.0) findTargets(coords, x, l, pr.distance, p);
+      pairs_.push_back(p);
+    }
+  };
+  for (int k = 0; k < nb; ++k) {
+    const mesh::Surface& sk = surfaces_[k];
+    const int npf = sk.nodesPerFacet;
+    for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
+      const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+      if (dim_ == 3) {
+        const auto& rule = facetRules_[k];
         for (int q = 0; q < int(rule.size()); ++q) {
           Real x[3] = {0.0, 0.0, 0.0};
           for (int a = 0; a < npf; ++a)
             for (int i = 0; i < 3; ++i) x[i] += rule[q].N[a] * coords[3 * std::size_t(nodes[a]) + i];
-          for (int l = 0; l < nb; ++l) {
-            if (!near[std::size_t(k) * nb + l]) continue;
-            ++summary_.numQuadraturePoints;
-            const Projection pr = search_[l]->project(x, cutoff_);
-            if (!pr.found()) {
-              ++summary_.numBeyondCutoff;
-              continue;
-            }
-            InteractionPair p{k, e, q, l};
-            p.targets[0] = pr.facet;
-            pairs_.push_back(p);
-          }
+          searchFrom(k, e, q, x);
         }
+        continue;
       }
-    }
-    summary_.numPairs = LocalIndex(pairs_.size());
-    return;
-  }
-  const int nq = rule_.size();
-  for (int k = 0; k < nb; ++k) {
-    const mesh::Surface& sk = surfaces_[k];
-    for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
-      const LocalIndex a = sk.facets[2 * e], b = sk.facets[2 * e + 1];
-      for (int q = 0; q < nq; ++q) {
+      const Real* xa = coords + 2 * std::size_t(nodes[0]);
+      const Real* xb = coords + 2 * std::size_t(nodes[1]);
+      for (int q = 0; q < rule_.size(); ++q) {
         const Real xi = rule_.points[q];
-        const Real x[2] = {(1.0 - xi) * coords[2 * std::size_t(a)] + xi * coords[2 * std::size_t(b)],
-                           (1.0 - xi) * coords[2 * std::size_t(a) + 1] + xi * coords[2 * std::size_t(b) + 1]};
-        for (int l = 0; l < nb; ++l) {
-          if (!near[std::size_t(k) * nb + l]) continue;
-          ++summary_.numQuadraturePoints;
-          const Projection pr = search_[l]->project(x, cutoff_);
-          if (!pr.found()) {
-            ++summary_.numBeyondCutoff;
-            continue;
-          }
-          InteractionPair p{k, e, q, l};
-          p.targets[0] = pr.facet;
-          if (smoothing_ > 0.0) findTargets(coords, x, l, pr.distance, p);
-          pairs_.push_back(p);
-        }
+        const Real x[2] = {(1.0 - xi) * xa[0] + xi * xb[0], (1.0 - xi) * xa[1] + xi * xb[1]};
+        searchFrom(k, e, q, x);
       }
     }
   }

@@ -20,6 +20,16 @@ std::string trim(const std::string& s) {
   return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
+// Lists the names of a sublist's entries, for error messages.
+std::string entryNames(const Teuchos::ParameterList& list) {
+  std::string names;
+  for (auto it = list.begin(); it != list.end(); ++it)
+    names += (names.empty() ? "" : ", ") + ("\"" + list.name(it) + "\"");
+  return names;
+}
+
+}  // namespace
+
 double parseDouble(const std::string& path, const std::string& text) {
   std::size_t used = 0;
   double v = 0.0;
@@ -32,16 +42,6 @@ double parseDouble(const std::string& path, const std::string& text) {
     throw InputError(path + ": \"" + text + "\" is not a number");
   return v;
 }
-
-// Lists the names of a sublist's entries, for error messages.
-std::string entryNames(const Teuchos::ParameterList& list) {
-  std::string names;
-  for (auto it = list.begin(); it != list.end(); ++it)
-    names += (names.empty() ? "" : ", ") + ("\"" + list.name(it) + "\"");
-  return names;
-}
-
-}  // namespace
 
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
   std::ifstream probe(path);

@@ -13,15 +13,15 @@ namespace cgcm::solver {
 using MEB = Thyra::ModelEvaluatorBase;
 using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
 
-ModelEvaluator::ModelEvaluator(std::shared_ptr<assembly::Assembler> assembler,
+ModelEvaluator::ModelEvaluator(std::shared_ptr<assembly::Problem> problem,
                                std::shared_ptr<assembly::DirichletConditions> dirichlet,
                                Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver,
                                std::vector<ScalarParameter> parameters)
-    : assembler_(std::move(assembler)),
+    : problem_(std::move(problem)),
       dirichlet_(std::move(dirichlet)),
       linearSolver_(std::move(linearSolver)),
       extra_(std::move(parameters)) {
-  const auto& comm = assembler_->dofs().comm();
+  const auto& comm = problem_->dofs().comm();
   const int np = 1 + int(extra_.size());
   xSpace_ = Thyra::createVectorSpace<Real>(map());
   pMap_ = Teuchos::rcp(new assembly::Map(np, 0, comm, Tpetra::LocallyReplicated));
@@ -51,7 +51,7 @@ int ParameterizedModel::parameterIndex(const std::string& name) const {
 }
 
 bool ModelEvaluator::graphCovers(const Vector& x) {
-  auto& a = *assembler_;
+  auto& a = *problem_;
   if (!a.interaction()) return true;
   return a.interactionGraphCovers(x, 0.5 * (a.interaction()->cutoff() + a.searchRadius()));
 }
@@ -100,7 +100,7 @@ MEB::OutArgs<Real> ModelEvaluator::createOutArgsImpl() const {
 }
 
 Teuchos::RCP<Thyra::LinearOpBase<Real>> ModelEvaluator::create_W_op() const {
-  Teuchos::RCP<assembly::Operator> W = assembler_->createMatrix();
+  Teuchos::RCP<assembly::Operator> W = problem_->createMatrix();
   return Thyra::tpetraLinearOp<Real, LocalIndex, GlobalIndex, assembly::Node>(xSpace_, xSpace_, W);
 }
 
@@ -125,12 +125,12 @@ std::vector<Real> ModelEvaluator::applyParameters(const MEB::InArgs<Real>& in) c
 
 void ModelEvaluator::evaluateUnconstrained(const Vector& x, const std::vector<Real>& p, Vector& f) {
   applyParameters(p);
-  assembler_->evaluate(x, f, nullptr);
+  problem_->evaluate(x, f, nullptr);
 }
 
 void ModelEvaluator::residual(const Vector& x, const std::vector<Real>& p, Vector& f) const {
   applyParameters(p);
-  assembler_->evaluate(x, f, nullptr);
+  problem_->evaluate(x, f, nullptr);
   dirichlet_->applyToResidual(x, p[0], f);
 }
 
@@ -148,7 +148,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<Real>& in, const MEB::OutAr
 
   if (!f.is_null() || !J.is_null()) {
     Teuchos::RCP<Vector> fWork = f.is_null() ? Teuchos::rcp(new Vector(map())) : f;
-    assembler_->evaluate(*x, *fWork, J.get());
+    problem_->evaluate(*x, *fWork, J.get());
     if (!f.is_null()) {
       dirichlet_->applyToResidual(*x, p[0], *f);
       const Real norm = f->norm2();

@@ -51,7 +51,7 @@ Teuchos::RCP<Vector> tpetraCopy(const NOX::Abstract::Vector& x) {
 
 }  // namespace
 
-double evaluationSeconds(const assembly::Assembler& a) {
+double evaluationSeconds(const assembly::Problem& a) {
   return a.timings().residual + a.timings().jacobian + a.timings().interaction;
 }
 
@@ -122,25 +122,25 @@ NewtonResult NewtonSolver::relax(Vector& u, const RelaxationSettings& settings) 
 
 NewtonResult NewtonSolver::withGraphUpdates(Vector& u, const std::function<NewtonResult(Vector&)>& attempt) {
   const auto t0 = std::chrono::steady_clock::now();
-  const double eval0 = evaluationSeconds(model_->assembler());
+  const double eval0 = evaluationSeconds(model_->problem());
   // The interaction couplings of the graph must cover the pairs near the start state.
-  if (model_->assembler().updateInteractionGraph(u)) resetJacobian();
+  if (model_->problem().updateInteractionGraph(u)) resetJacobian();
   NewtonResult result;
   int rebuilds = 0;
   for (int rebuild = 0;; ++rebuild) {
-    model_->assembler().clearGraphOutdated();
+    model_->problem().clearGraphOutdated();
     result = attempt(u);
     result.graphRebuilds = rebuilds;
-    if (result.converged || !model_->assembler().graphOutdated() || rebuild == 2) break;
+    if (result.converged || !model_->problem().graphOutdated() || rebuild == 2) break;
     // Pairs moved beyond the graph during the iteration: widen it around the
     // start and around the iterate where it happened, then redo the solve.
-    model_->assembler().updateInteractionGraph(u, true, 1.0 + rebuild);
-    model_->assembler().updateInteractionGraph(*lastIterate_, true, 1.0 + rebuild);
+    model_->problem().updateInteractionGraph(u, true, 1.0 + rebuild);
+    model_->problem().updateInteractionGraph(*lastIterate_, true, 1.0 + rebuild);
     resetJacobian();
     ++rebuilds;
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  result.evaluationSeconds = evaluationSeconds(model_->assembler()) - eval0;
+  result.evaluationSeconds = evaluationSeconds(model_->problem()) - eval0;
   return result;
 }
 
@@ -236,7 +236,7 @@ NewtonResult NewtonSolver::relaxOnCurrentGraph(Vector& u, const RelaxationSettin
         }
       }
     } catch (const std::exception& e) {
-      if (model_->assembler().graphOutdated()) {
+      if (model_->problem().graphOutdated()) {
         lastIterate_ = tpetraCopy(group->getX());
         result.failure = e.what();
         return result;
@@ -290,7 +290,7 @@ NewtonResult NewtonSolver::runNox(const Teuchos::RCP<NOX::Thyra::Group>& group, 
     // Inverted cells, touching surfaces, entries outside the graph, linear
     // solver breakdowns: a failed solve, not a crash.
     result.failure = e.what();
-    if (model_->assembler().graphOutdated()) lastIterate_ = tpetraCopy(group->getX());
+    if (model_->problem().graphOutdated()) lastIterate_ = tpetraCopy(group->getX());
   } catch (const char* e) {  // some NOX failures throw a bare string
     result.failure = std::string("NOX: ") + e;
   }

@@ -178,7 +178,7 @@ TEST(LoadStepping, AnEvaluationErrorCutsTheStepBack) {
   const auto setup = app::buildProblem(*d);
   auto comm = Tpetra::getDefaultComm();
   auto disc = app::discretize(comm, setup, autoSolver());
-  auto model = Teuchos::rcp(new FaultyModel(disc.assembler, disc.dirichlet, autoSolver()));
+  auto model = Teuchos::rcp(new FaultyModel(disc.problem, disc.dirichlet, autoSolver()));
   solver::NewtonSettings settings;
   settings.forceScale = setup.forceScale;
   solver::NewtonSolver newton(model, settings);

@@ -39,7 +39,7 @@ RCP<ParameterList> deck(const std::vector<std::string>& overrides) {
 struct System {
   app::ProblemSetup setup;
   RCP<assembly::DofMap> dofs;
-  std::shared_ptr<assembly::Assembler> assembler;
+  std::shared_ptr<assembly::Problem> problem;
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   RCP<solver::ModelEvaluator> model;
 
@@ -49,7 +49,7 @@ struct System {
                                 solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"),
                                                           comm->getSize(), assembly::formulationDim(setup.formulation)));
     dofs = disc.dofs;
-    assembler = disc.assembler;
+    problem = disc.problem;
     dirichlet = disc.dirichlet;
     model = disc.model;
   }
@@ -173,16 +173,16 @@ TEST(ModelEvaluator, JacobianMatchesFiniteDifferencesOfResidual) {
     u.randomize(-0.05, 0.05);
     v.randomize(-1.0, 1.0);
     sys.model->setLoad(-0.03);
-    auto W = sys.assembler->createMatrix();
-    sys.assembler->evaluate(u, fp, W.get());
+    auto W = sys.problem->createMatrix();
+    sys.problem->evaluate(u, fp, W.get());
     sys.dirichlet->applyToJacobian(*W);
     W->apply(v, Jv);
     const double h = 1e-6;
     up.update(1.0, u, h, v, 0.0);
     um.update(1.0, u, -h, v, 0.0);
-    sys.assembler->evaluate(up, fp, nullptr);
+    sys.problem->evaluate(up, fp, nullptr);
     sys.dirichlet->applyToResidual(up, -0.03, fp);
-    sys.assembler->evaluate(um, fm, nullptr);
+    sys.problem->evaluate(um, fm, nullptr);
     sys.dirichlet->applyToResidual(um, -0.03, fm);
     fp.update(-1.0 / (2 * h), fm, 1.0 / (2 * h));  // (f+ - f-)/2h
     fp.update(-1.0, Jv, 1.0);
@@ -204,9 +204,9 @@ TEST(PseudoTransientModel, ResidualAndShiftedJacobianAreMxdotPlusFAndAlphaMPlusJ
   solver::PseudoTransientModel transient(sys.model);
   transient.setMassFromJacobian(u);
   // M: |diag J| on free rows, 0 on constrained ones.
-  auto J = sys.assembler->createMatrix();
+  auto J = sys.problem->createMatrix();
   assembly::Vector f(map), diag(map);
-  sys.assembler->evaluate(u, f, J.get());
+  sys.problem->evaluate(u, f, J.get());
   sys.dirichlet->applyToResidual(u, -0.03, f);
   J->getLocalDiagCopy(diag);
   diag.abs(diag);
@@ -364,18 +364,18 @@ TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
   System sys(*d);
   const auto& s = sys.setup;
   const auto& dofs = sys.dofs;
-  const auto& assembler = sys.assembler;
+  const auto& problem = sys.problem;
   assembly::Vector far(dofs->ownedMap()), near(dofs->ownedMap()), f(dofs->ownedMap());
   assembly::DirichletConditions lift(dofs);
   lift.add(s.mesh->nodeSet("upper body"), 1, 0.0, 1.0);
   lift.impose(1.0, far);  // the sphere one radius higher
-  EXPECT_TRUE(assembler->updateInteractionGraph(far));
-  auto J = assembler->createMatrix();
-  EXPECT_THROW(assembler->evaluate(near, f, J.get()), assembly::GraphOutdatedError);
-  EXPECT_TRUE(assembler->updateInteractionGraph(near));
-  EXPECT_FALSE(assembler->updateInteractionGraph(near));  // nothing new
-  J = assembler->createMatrix();
-  EXPECT_NO_THROW(assembler->evaluate(near, f, J.get()));
+  EXPECT_TRUE(problem->updateInteractionGraph(far));
+  auto J = problem->createMatrix();
+  EXPECT_THROW(problem->evaluate(near, f, J.get()), assembly::GraphOutdatedError);
+  EXPECT_TRUE(problem->updateInteractionGraph(near));
+  EXPECT_FALSE(problem->updateInteractionGraph(near));  // nothing new
+  J = problem->createMatrix();
+  EXPECT_NO_THROW(problem->evaluate(near, f, J.get()));
 }
 
 }  // namespace

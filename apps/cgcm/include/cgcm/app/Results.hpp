@@ -28,7 +28,7 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 class ResultsWriter {
  public:
   /// Creates `path` on rank 0 with the mesh of `disc` and the global
-  /// variables `globals` (stresses with the assembler's material of each
+  /// variables `globals` (stresses with the problem's material of each
   /// body). Throws InputError (rank 0) if it cannot be created. Collective.
   ResultsWriter(const std::string& path, const Discretization& disc, const std::vector<std::string>& globals);
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cgcm/assembly/Assembler.hpp"
+#include "cgcm/assembly/Problem.hpp"
 #include "cgcm/interaction/SurfaceInteraction.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
@@ -86,13 +86,13 @@ ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 
 assembly::Formulation parseFormulation(const std::string& name);
 
-/// The discrete problem of a set-up: dof distribution, assembler (with the
+/// The discrete problem of a set-up: dof distribution, problem (with the
 /// interaction when there is one), Dirichlet conditions and ModelEvaluator,
 /// whose p(0) is (u, gammaW, gammaL) with an interaction and (u) without.
 struct Discretization {
   Teuchos::RCP<assembly::DofMap> dofs;
-  std::shared_ptr<assembly::Assembler> assembler;
-  std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the assembler's, or null
+  std::shared_ptr<assembly::Problem> problem;
+  std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the problem's, or null
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   Teuchos::RCP<solver::ModelEvaluator> model;
 };

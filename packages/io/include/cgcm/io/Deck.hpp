@@ -20,6 +20,10 @@ Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);
 void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
                     const std::vector<std::string>& overrides);
 
+/// The number `text` (surrounding blanks allowed, nothing else); throws
+/// InputError "<path>: "<text>" is not a number" otherwise.
+double parseDouble(const std::string& path, const std::string& text);
+
 /// Validates `deck` against `valid` and fills in defaults. Unknown names, wrong
 /// types and out-of-range values throw InputError with the full parameter path
 /// and the allowed values.

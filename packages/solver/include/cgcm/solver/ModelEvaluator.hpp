@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "cgcm/assembly/Assembler.hpp"
+#include "cgcm/assembly/Problem.hpp"
 #include "cgcm/assembly/Dirichlet.hpp"
 #include "cgcm/solver/ParameterizedModel.hpp"
 
@@ -38,7 +38,7 @@ class ModelEvaluator : public ParameterizedModel {
   /// Name of p(0)[0], the prescribed displacement.
   static constexpr const char* kLoadParameterName = "u";
 
-  ModelEvaluator(std::shared_ptr<assembly::Assembler> assembler,
+  ModelEvaluator(std::shared_ptr<assembly::Problem> problem,
                  std::shared_ptr<assembly::DirichletConditions> dirichlet,
                  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver,
                  std::vector<ScalarParameter> parameters = {});
@@ -53,9 +53,9 @@ class ModelEvaluator : public ParameterizedModel {
 
   /// The interaction couplings within the middle of the cutoff and the search radius.
   bool graphCovers(const Vector& x) override;
-  void growGraph(const Vector& x, bool widen) override { assembler_->updateInteractionGraph(x, true, widen ? 2.0 : 1.0); }
-  bool graphOutdated() const override { return assembler_->graphOutdated(); }
-  void clearGraphOutdated() override { assembler_->clearGraphOutdated(); }
+  void growGraph(const Vector& x, bool widen) override { problem_->updateInteractionGraph(x, true, widen ? 2.0 : 1.0); }
+  bool graphOutdated() const override { return problem_->graphOutdated(); }
+  void clearGraphOutdated() override { problem_->clearGraphOutdated(); }
   void setLoad(Real u) { setParameter(0, u); }
   Real load() const { return parameter(0); }
 
@@ -63,9 +63,9 @@ class ModelEvaluator : public ParameterizedModel {
   /// constrained entries are the reactions) at (x, p). Collective.
   void evaluateUnconstrained(const Vector& x, const std::vector<Real>& p, Vector& f);
 
-  assembly::Assembler& assembler() { return *assembler_; }
+  assembly::Problem& problem() { return *problem_; }
   const assembly::DirichletConditions& dirichlet() const { return *dirichlet_; }
-  const Teuchos::RCP<const assembly::Map>& map() const { return assembler_->dofs().ownedMap(); }
+  const Teuchos::RCP<const assembly::Map>& map() const { return problem_->dofs().ownedMap(); }
 
   // Thyra::ModelEvaluator
   Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_x_space() const override { return xSpace_; }
@@ -91,7 +91,7 @@ class ModelEvaluator : public ParameterizedModel {
   /// f(x, p) with boundary conditions (residual only).
   void residual(const Vector& x, const std::vector<Real>& p, Vector& f) const;
 
-  std::shared_ptr<assembly::Assembler> assembler_;
+  std::shared_ptr<assembly::Problem> problem_;
   std::shared_ptr<assembly::DirichletConditions> dirichlet_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver_;
   std::vector<ScalarParameter> extra_;

@@ -101,7 +101,7 @@ class NewtonSolver {
   Teuchos::RCP<Vector> lastIterate_;  ///< iterate at which the graph was found outdated
 };
 
-/// Wall time the assembler has spent in evaluations so far.
-double evaluationSeconds(const assembly::Assembler& a);
+/// Wall time the problem has spent in evaluations so far.
+double evaluationSeconds(const assembly::Problem& a);
 
 }  // namespace cgcm::solver

@@ -1,0 +1,64 @@
+#pragma once
+// The bulk of one body as a part of the discrete problem: the internal force
+// and tangent of its cells on this rank (updated Lagrangian Neo-Hookean,
+// package fem), in Kokkos element loops that scatter into the overlap
+// (owned + shared) rows with atomic adds. It knows its cells, their dofs and
+// its material; the maps, the graph and the sum over parts belong to the
+// Problem.
+#include <vector>
+
+#include <Kokkos_Core.hpp>
+
+#include "cgcm/assembly/DofMap.hpp"
+#include "cgcm/assembly/Formulation.hpp"
+#include "cgcm/material/NeoHookean.hpp"
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::assembly {
+
+class BulkPart {
+ public:
+  using LocalMatrix = Matrix::local_matrix_device_type;
+  using ConstVectorView = Vector::dual_view_type::t_dev::const_type;
+  using VectorView = Vector::dual_view_type::t_dev;
+
+  /// The cells of body `body` that this rank evaluates. Throws InputError for
+  /// a cell type the formulation does not support.
+  BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formulation formulation,
+           const material::NeoHookean& material);
+
+  int body() const { return body_; }
+  const material::NeoHookean& material() const { return material_; }
+  LocalIndex numLocalCells() const;
+
+  /// Adds the number of this part's cells at each node (index = overlap
+  /// local dof / dim) to `cellsPerNode`, for a bound on the graph's row length.
+  void countCellsPerNode(std::vector<int>& cellsPerNode) const;
+  int maxNodesPerCell() const;
+  /// Inserts the element cliques into `graph` (in assembly mode).
+  void insertCliques(Graph& graph) const;
+  /// Caches the matrix column ids of the cells' dofs (after every new graph).
+  void setColumnMap(const Map& columns);
+
+  /// f += f_int of the cells, and J += their tangent if J is given (J's
+  /// column ids must be those of setColumnMap). Returns the number of cells
+  /// that turned inside out (J <= 0); their contributions are left out.
+  int assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const;
+
+ private:
+  struct Block {
+    mesh::CellType type;
+    int numNodes;
+    Kokkos::View<LocalIndex**, Kokkos::LayoutRight> dofLids;  // [cell][a*dim+i], overlap local ids
+    Kokkos::View<LocalIndex**, Kokkos::LayoutRight> colLids;  // [cell][a*dim+i], matrix column ids
+    Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i], reference coordinates
+  };
+  const Map* overlap_;
+  int body_;
+  Formulation formulation_;
+  int dim_;
+  material::NeoHookean material_;
+  std::vector<Block> blocks_;
+};
+
+}  // namespace cgcm::assembly

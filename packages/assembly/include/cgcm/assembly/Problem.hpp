@@ -1,0 +1,128 @@
+#pragma once
+// The discrete problem as a sum of parts: f(u) = sum over bodies of the bulk
+// part + the interaction part, and the same for the tangent. The Problem owns
+// what the parts share: the dof maps, the matrix graph (the bulk cliques and
+// the interaction couplings, which may be replaced between solves), the
+// overlap vectors and the export of shared rows to their owners, and the
+// timings. Parts write into the overlap views; they do not see each other.
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "cgcm/assembly/BulkPart.hpp"
+#include "cgcm/assembly/DofMap.hpp"
+#include "cgcm/assembly/Formulation.hpp"
+#include "cgcm/assembly/InteractionPart.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/SurfaceInteraction.hpp"
+#include "cgcm/material/NeoHookean.hpp"
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::assembly {
+
+/// Wall-clock seconds spent in evaluations, accumulated since construction.
+struct AssemblyTimings {
+  double residual = 0.0;     ///< residual-only evaluations of the bulk
+  double jacobian = 0.0;     ///< residual + tangent evaluations of the bulk (incl. fill)
+  double interaction = 0.0;  ///< interaction: coordinate gather, search, kernel, scatter
+  int residualCalls = 0;
+  int jacobianCalls = 0;
+};
+
+/// An interaction tangent entry fell outside the matrix graph (the set of
+/// interacting surface elements moved beyond the graph's search radius). The
+/// Jacobian is incomplete: rebuild the graph and redo the step.
+struct GraphOutdatedError : NumericalError {
+  using NumericalError::NumericalError;
+};
+
+class Problem {
+ public:
+  /// One material for every body, or (bodyMaterials) one per body (index = body id).
+  Problem(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
+          const material::NeoHookean& material);
+  Problem(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
+          std::vector<material::NeoHookean> bodyMaterials);
+
+  const DofMap& dofs() const { return *dofs_; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
+  Formulation formulation() const { return formulation_; }
+  /// The material of a body.
+  const material::NeoHookean& material(int body) const { return bulk_.at(body).material(); }
+  const std::vector<BulkPart>& bulkParts() const { return bulk_; }
+
+  /// Couplings (row node, column node) added to the cell cliques in the graph.
+  /// Rows must be nodes of this rank's overlap map. Takes effect on the next graph().
+  void setExtraCouplings(std::vector<std::pair<LocalIndex, LocalIndex>> nodePairs);
+  /// The current graph (built on first use and after setExtraCouplings).
+  Teuchos::RCP<const Graph> graph();
+  /// A new zero matrix on the current graph.
+  Teuchos::RCP<Matrix> createMatrix();
+
+  /// f(u) = sum of the parts (owned rows, before boundary conditions); if J
+  /// is given, also its tangent (J must come from createMatrix() of this
+  /// graph). Collective. Throws InvertedElementError on every rank if any
+  /// cell has J <= 0, GraphOutdatedError if an interaction tangent entry fell
+  /// outside the graph.
+  void evaluate(const Vector& u, Vector& f, Matrix* J);
+
+  /// Adds the interaction part (Method 3) to every evaluation. The matrix
+  /// graph holds the couplings of all surface facets within the search
+  /// radius, `searchRadiusFactor` (> 1) times the interaction's current
+  /// cutoff, of each other, refreshed by updateInteractionGraph.
+  void setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor);
+  const interaction::SurfaceInteraction* interaction() const {
+    return interactionPart_ ? &interactionPart_->interaction() : nullptr;
+  }
+  /// The graph's search radius now (it follows the cutoff; 0 without interaction).
+  Real searchRadius() const { return interactionPart_ ? interactionPart_->searchRadius() : 0.0; }
+  /// Refreshes the interaction couplings from the state u: if some are missing
+  /// from the graph, the graph is rebuilt (with the old couplings kept when
+  /// `keepExisting`) and true is returned on every rank. `radiusFactor` scales
+  /// the search radius. Collective.
+  bool updateInteractionGraph(const Vector& u, bool keepExisting = false, Real radiusFactor = 1.0);
+  /// True if the graph holds every coupling of surface facets within
+  /// `radius` of each other at the state u (true without interaction). Collective.
+  bool interactionGraphCovers(const Vector& u, Real radius);
+  /// True if an evaluation since the last clearGraphOutdated() met interaction
+  /// tangent entries outside the graph (it then threw GraphOutdatedError).
+  bool graphOutdated() const { return graphOutdated_; }
+  void clearGraphOutdated() { graphOutdated_ = false; }
+  /// Current coordinates (X + u) of every surface node of every body, as a
+  /// mesh-wide array (dim entries per node; other nodes hold X). Collective.
+  const std::vector<Real>& surfaceCoordinates(const Vector& u) { return interactionPart_->surfaceCoordinates(u); }
+  /// Per body: the interaction force on it at the state of the last
+  /// evaluation (x, y, z), summed over ranks. Collective; empty without interaction.
+  std::vector<std::array<Real, 3>> interactionForces() const;
+
+  const AssemblyTimings& timings() const { return timings_; }
+
+  /// Component `component` of `v` at `node`, on every rank (collective).
+  Real nodeValue(const Vector& v, LocalIndex node, int component) const;
+
+  /// Sum of component `component` of the owned entries of `f` over a node set (collective).
+  Real sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const;
+
+ private:
+  void buildGraph();
+
+  Teuchos::RCP<const DofMap> dofs_;
+  std::shared_ptr<const mesh::Mesh> mesh_;
+  Formulation formulation_;
+  int dim_;
+  std::vector<BulkPart> bulk_;                         ///< one per body
+  std::unique_ptr<InteractionPart> interactionPart_;  ///< null without interaction
+
+  std::vector<std::pair<LocalIndex, LocalIndex>> extraCouplings_;
+  Teuchos::RCP<Graph> graph_;
+  int graphVersion_ = 0;  ///< incremented on every rebuild: cached column ids follow it
+  int columnsVersion_ = -1;
+  bool graphOutdated_ = false;
+
+  Teuchos::RCP<Vector> uOverlap_, fOverlap_;
+  Teuchos::RCP<const Export> exporter_;
+  AssemblyTimings timings_;
+};
+
+}  // namespace cgcm::assembly

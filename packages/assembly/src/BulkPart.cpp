@@ -1,0 +1,163 @@
+#include "cgcm/assembly/BulkPart.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/fem/SolidKernel.hpp"
+
+namespace cgcm::assembly {
+
+const char* formulationName(Formulation f) {
+  switch (f) {
+    case Formulation::PlaneStrain: return "plane strain";
+    case Formulation::Axisymmetric: return "axisymmetric";
+    case Formulation::ThreeD: return "3D";
+  }
+  return "?";
+}
+
+int formulationDim(Formulation f) { return f == Formulation::ThreeD ? 3 : 2; }
+
+namespace {
+
+using DofView = Kokkos::View<LocalIndex**, Kokkos::LayoutRight>;
+using CoordView = Kokkos::View<Real***, Kokkos::LayoutRight>;
+
+// Evaluates one block with a fixed (formulation, element) kernel; returns the
+// number of cells that turned inside out.
+template <class Kernel>
+int assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordView& Xref,
+                  const BulkPart::ConstVectorView& u, const BulkPart::VectorView& f,
+                  const BulkPart::LocalMatrix* J, const material::NeoHookean& mat) {
+  constexpr int nn = Kernel::numNodes, dim = Kernel::dim, nd = Kernel::numDofs;
+  const LocalIndex numCells = LocalIndex(dofLids.extent(0));
+  int failures = 0;
+  const bool withTangent = J != nullptr;
+  BulkPart::LocalMatrix K = withTangent ? *J : BulkPart::LocalMatrix();
+  Kokkos::parallel_reduce(
+      "cgcm::assembleBlock", Kokkos::RangePolicy<ExecSpace>(0, numCells),
+      [=](const LocalIndex c, int& failed) {
+        Real X[nn][dim], x[nn][dim];
+        for (int a = 0; a < nn; ++a)
+          for (int i = 0; i < dim; ++i) {
+            X[a][i] = Xref(c, a, i);
+            x[a][i] = X[a][i] + u(dofLids(c, a * dim + i), 0);
+          }
+        Real fe[nd];
+        bool ok;
+        if (withTangent) {
+          Real ke[nd][nd];
+          ok = Kernel::residualAndTangent(X, x, mat, fe, ke);
+          if (ok) {
+            LocalIndex cols[nd];
+            for (int k = 0; k < nd; ++k) cols[k] = colLids(c, k);
+            for (int r = 0; r < nd; ++r) K.sumIntoValues(dofLids(c, r), cols, nd, ke[r], false, true);
+          }
+        } else {
+          ok = Kernel::residual(X, x, mat, fe);
+        }
+        if (!ok) {
+          ++failed;
+          return;
+        }
+        for (int r = 0; r < nd; ++r) Kokkos::atomic_add(&f(dofLids(c, r), 0), fe[r]);
+      },
+      failures);
+  return failures;
+}
+
+}  // namespace
+
+BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formulation formulation,
+                   const material::NeoHookean& material)
+    : overlap_(dofs.overlapMap().get()), body_(body), formulation_(formulation), dim_(formulationDim(formulation)),
+      material_(material) {
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const auto& blk = mesh.blocks[b];
+    if (blk.body != body) continue;
+    const bool fits = (dim_ == 2 && blk.type == mesh::CellType::Quad4) ||
+                      (dim_ == 3 && (blk.type == mesh::CellType::Hex8 || blk.type == mesh::CellType::Tet4));
+    if (!fits)
+      throw InputError(std::string("element block \"") + blk.name + "\" has " + mesh::cellTypeName(blk.type) +
+                       " cells, which the " + formulationName(formulation) + " formulation does not support");
+    const auto& cells = dofs.localCells(b);
+    const int nn = mesh::nodesPerCell(blk.type);
+    Block d;
+    d.type = blk.type;
+    d.numNodes = nn;
+    d.dofLids = DofView("dofLids", cells.size(), nn * dim_);
+    d.X = CoordView("X", cells.size(), nn, dim_);
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      for (int a = 0; a < nn; ++a) {
+        const LocalIndex node = blk.connectivity[std::size_t(cells[k]) * nn + a];
+        for (int i = 0; i < dim_; ++i) {
+          d.dofLids(k, a * dim_ + i) = overlap_->getLocalElement(dofs.dof(node, i));
+          d.X(k, a, i) = mesh.coord(node, i);
+        }
+      }
+    blocks_.push_back(d);
+  }
+}
+
+LocalIndex BulkPart::numLocalCells() const {
+  LocalIndex n = 0;
+  for (const auto& b : blocks_) n += LocalIndex(b.dofLids.extent(0));
+  return n;
+}
+
+void BulkPart::countCellsPerNode(std::vector<int>& cellsPerNode) const {
+  for (const auto& b : blocks_)
+    for (std::size_t c = 0; c < b.dofLids.extent(0); ++c)
+      for (int a = 0; a < b.numNodes; ++a) ++cellsPerNode[b.dofLids(c, a * dim_) / dim_];
+}
+
+int BulkPart::maxNodesPerCell() const {
+  int n = 0;
+  for (const auto& b : blocks_) n = std::max(n, b.numNodes);
+  return n;
+}
+
+void BulkPart::insertCliques(Graph& graph) const {
+  for (const auto& b : blocks_) {
+    const int nd = b.numNodes * dim_;
+    std::vector<GlobalIndex> gids(nd);
+    for (std::size_t c = 0; c < b.dofLids.extent(0); ++c) {
+      for (int k = 0; k < nd; ++k) gids[k] = overlap_->getGlobalElement(b.dofLids(c, k));
+      for (int k = 0; k < nd; ++k) graph.insertGlobalIndices(gids[k], nd, gids.data());
+    }
+  }
+}
+
+void BulkPart::setColumnMap(const Map& columns) {
+  for (auto& b : blocks_) {
+    b.colLids = DofView("colLids", b.dofLids.extent(0), b.dofLids.extent(1));
+    for (std::size_t c = 0; c < b.dofLids.extent(0); ++c)
+      for (std::size_t k = 0; k < b.dofLids.extent(1); ++k)
+        b.colLids(c, k) = columns.getLocalElement(overlap_->getGlobalElement(b.dofLids(c, k)));
+  }
+}
+
+int BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const {
+  using namespace fem;
+  int failures = 0;
+  for (const auto& b : blocks_) {
+    switch (formulation_) {
+      case Formulation::PlaneStrain:
+        failures += assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        break;
+      case Formulation::Axisymmetric:
+        failures += assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        break;
+      case Formulation::ThreeD:
+        if (b.type == mesh::CellType::Hex8)
+          failures += assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        else
+          failures += assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        break;
+    }
+  }
+  return failures;
+}
+
+}  // namespace cgcm::assembly

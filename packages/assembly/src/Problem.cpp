@@ -1,0 +1,185 @@
+#include "cgcm/assembly/Problem.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Assembly_Helpers.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace cgcm::assembly {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+}  // namespace
+
+Problem::Problem(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
+                 const material::NeoHookean& material)
+    : Problem(dofs, mesh, formulation, std::vector<material::NeoHookean>(mesh->numBodies, material)) {}
+
+Problem::Problem(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Mesh> mesh, Formulation formulation,
+                 std::vector<material::NeoHookean> bodyMaterials)
+    : dofs_(std::move(dofs)), mesh_(std::move(mesh)), formulation_(formulation), dim_(formulationDim(formulation)) {
+  if (mesh_->dim != dim_)
+    throw InputError(std::string("Problem/Formulation = \"") + formulationName(formulation) + "\" needs a " +
+                     std::to_string(dim_) + "D mesh, got a " + std::to_string(mesh_->dim) + "D one");
+  if (int(bodyMaterials.size()) != mesh_->numBodies)
+    throw std::logic_error("Problem: " + std::to_string(bodyMaterials.size()) + " materials for " +
+                           std::to_string(mesh_->numBodies) + " bodies");
+  for (int b = 0; b < mesh_->numBodies; ++b) bulk_.emplace_back(*dofs_, *mesh_, b, formulation, bodyMaterials[b]);
+  uOverlap_ = Teuchos::rcp(new Vector(dofs_->overlapMap()));
+  fOverlap_ = Teuchos::rcp(new Vector(dofs_->overlapMap()));
+  exporter_ = Teuchos::rcp(new Export(dofs_->overlapMap(), dofs_->ownedMap()));
+}
+
+void Problem::setExtraCouplings(std::vector<std::pair<LocalIndex, LocalIndex>> nodePairs) {
+  std::sort(nodePairs.begin(), nodePairs.end());
+  nodePairs.erase(std::unique(nodePairs.begin(), nodePairs.end()), nodePairs.end());
+  if (nodePairs == extraCouplings_ && !graph_.is_null()) return;
+  extraCouplings_ = std::move(nodePairs);
+  graph_ = Teuchos::null;
+}
+
+Teuchos::RCP<const Graph> Problem::graph() {
+  if (graph_.is_null()) buildGraph();
+  return graph_;
+}
+
+Teuchos::RCP<Matrix> Problem::createMatrix() { return Teuchos::rcp(new Matrix(graph())); }
+
+void Problem::buildGraph() {
+  // Row lengths: a generous bound from the cell cliques plus extra couplings per row node.
+  const Map& overlap = *dofs_->overlapMap();
+  std::vector<int> cellsPerNode(overlap.getNodeNumElements() / dim_ + 1, 0);
+  int maxNodes = 0;
+  for (const auto& part : bulk_) {
+    part.countCellsPerNode(cellsPerNode);
+    maxNodes = std::max(maxNodes, part.maxNodesPerCell());
+  }
+  const int maxCells = *std::max_element(cellsPerNode.begin(), cellsPerNode.end());
+  std::vector<int> extraPerRow(mesh_->numNodes(), 0);
+  int maxExtra = 0;
+  for (const auto& [r, c] : extraCouplings_) maxExtra = std::max(maxExtra, ++extraPerRow[r]);
+  const std::size_t maxPerRow = std::size_t(maxCells) * maxNodes * dim_ + std::size_t(maxExtra) * dim_;
+
+  graph_ = Teuchos::rcp(new Graph(dofs_->ownedMap(), dofs_->overlapMap(), maxPerRow));
+  Tpetra::beginAssembly(*graph_);
+  for (const auto& part : bulk_) part.insertCliques(*graph_);
+  std::vector<GlobalIndex> cols(dim_);
+  for (const auto& [r, c] : extraCouplings_) {
+    for (int j = 0; j < dim_; ++j) cols[j] = dofs_->dof(c, j);
+    for (int i = 0; i < dim_; ++i) {
+      const GlobalIndex row = dofs_->dof(r, i);
+      if (overlap.getLocalElement(row) == Teuchos::OrdinalTraits<LocalIndex>::invalid())
+        throw std::logic_error("interaction coupling row node " + std::to_string(r) + " is not on this rank");
+      graph_->insertGlobalIndices(row, dim_, cols.data());
+    }
+  }
+  Tpetra::endAssembly(*graph_);
+  ++graphVersion_;
+}
+
+void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
+  const auto t0 = Clock::now();
+  uOverlap_->doImport(u, *dofs_->ownedToOverlap(), Tpetra::INSERT);
+  fOverlap_->putScalar(0.0);
+  if (J) {
+    Tpetra::beginAssembly(*J);
+    J->setAllToScalar(0.0);
+    if (columnsVersion_ != graphVersion_) {
+      // column ids of the owned+shared matrix; valid while J is in assembly mode
+      for (auto& part : bulk_) part.setColumnMap(*J->getColMap());
+      columnsVersion_ = graphVersion_;
+    }
+  }
+  int failures = 0;
+  {
+    auto uv = uOverlap_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto fv = fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+    BulkPart::LocalMatrix lclJ;
+    if (J) lclJ = J->getLocalMatrixDevice();
+    for (const auto& part : bulk_) failures += part.assemble(uv, fv, J ? &lclJ : nullptr);
+  }
+  double interactionSeconds = 0.0;
+  int dropped = 0;
+  if (interactionPart_) {
+    const auto ti = Clock::now();
+    dropped = interactionPart_->assemble(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J);
+    interactionSeconds = secondsSince(ti);
+  }
+  int counts[2] = {failures, dropped}, globalCounts[2] = {0, 0};
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, 2, counts, globalCounts);
+  if (J) Tpetra::endAssembly(*J);
+  f.putScalar(0.0);
+  f.doExport(*fOverlap_, *exporter_, Tpetra::ADD);
+  timings_.interaction += interactionSeconds;
+  if (J) {
+    timings_.jacobian += secondsSince(t0) - interactionSeconds;
+    ++timings_.jacobianCalls;
+  } else {
+    timings_.residual += secondsSince(t0) - interactionSeconds;
+    ++timings_.residualCalls;
+  }
+  if (globalCounts[0] > 0)
+    throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0)");
+  if (globalCounts[1] > 0) {
+    graphOutdated_ = true;
+    throw GraphOutdatedError(std::to_string(globalCounts[1]) +
+                             " interaction tangent entries fell outside the matrix graph");
+  }
+}
+
+void Problem::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor) {
+  interactionPart_ = std::make_unique<InteractionPart>(dofs_, *mesh_, std::move(interaction), searchRadiusFactor);
+}
+
+std::vector<std::array<Real, 3>> Problem::interactionForces() const {
+  return interactionPart_ ? interactionPart_->forces() : std::vector<std::array<Real, 3>>{};
+}
+
+bool Problem::interactionGraphCovers(const Vector& u, Real radius) {
+  if (!interactionPart_) return true;
+  const auto wanted = interactionPart_->couplings(u, radius);
+  const int missing = graph_.is_null() || !std::includes(extraCouplings_.begin(), extraCouplings_.end(),
+                                                         wanted.begin(), wanted.end());
+  int anyMissing = 0;
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, missing, Teuchos::outArg(anyMissing));
+  return anyMissing == 0;
+}
+
+bool Problem::updateInteractionGraph(const Vector& u, bool keepExisting, Real radiusFactor) {
+  if (!interactionPart_) return false;
+  auto wanted = interactionPart_->couplings(u, searchRadius() * radiusFactor);
+  const int missing =
+      std::includes(extraCouplings_.begin(), extraCouplings_.end(), wanted.begin(), wanted.end()) ? 0 : 1;
+  int anyMissing = 0;
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, missing, Teuchos::outArg(anyMissing));
+  if (!anyMissing && !graph_.is_null()) return false;
+  if (keepExisting) wanted.insert(wanted.end(), extraCouplings_.begin(), extraCouplings_.end());
+  extraCouplings_.clear();
+  setExtraCouplings(std::move(wanted));
+  graph();
+  return true;
+}
+
+Real Problem::nodeValue(const Vector& v, LocalIndex node, int component) const {
+  return sumOverNodes(v, {node}, component);
+}
+
+Real Problem::sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const {
+  auto fv = f.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const Map& owned = *dofs_->ownedMap();
+  Real local = 0.0;
+  for (LocalIndex n : nodes) {
+    if (!dofs_->ownsNode(n)) continue;
+    local += fv(owned.getLocalElement(dofs_->dof(n, component)), 0);
+  }
+  Real global = 0.0;
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
+}  // namespace cgcm::assembly

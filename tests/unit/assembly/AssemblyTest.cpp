@@ -1,0 +1,203 @@
+// The parts of the discrete problem: the bulk part per body (its tangent
+// against finite differences, a material per body), the interaction part
+// (the coupled tangent against finite differences, the force on each body)
+// and the Problem as their sum.
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "cgcm/assembly/Problem.hpp"
+#include "cgcm/interaction/PairPotential.hpp"
+#include "cgcm/mesh/Generators.hpp"
+
+namespace cgcm::assembly {
+namespace {
+
+// Two boxes along z, a gap apart: body 0 tetrahedra below, body 1 hexahedra above.
+std::shared_ptr<mesh::Mesh> twoBoxes(Real gap) {
+  mesh::BoxSpec lower;
+  lower.nx = lower.ny = lower.nz = 2;
+  lower.tetrahedra = true;
+  lower.z0 = -1.0;
+  auto m = std::make_shared<mesh::Mesh>(mesh::box(lower));
+  mesh::BoxSpec upper;
+  upper.nx = upper.ny = upper.nz = 2;
+  upper.x0 = 0.1, upper.y0 = -0.05, upper.z0 = gap;
+  upper.name = "upper";
+  mesh::append(*m, mesh::box(upper), "upper ");
+  return m;
+}
+
+std::vector<Real> toStd(const Vector& v) {
+  auto h = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<Real> out(h.extent(0));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = h(i, 0);
+  return out;
+}
+
+void fromStd(const std::vector<Real>& x, Vector& v) {
+  auto h = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t i = 0; i < x.size(); ++i) h(i, 0) = x[i];
+}
+
+std::vector<Real> residual(Problem& p, const std::vector<Real>& u) {
+  Vector uv(p.dofs().ownedMap()), f(p.dofs().ownedMap());
+  fromStd(u, uv);
+  p.evaluate(uv, f, nullptr);
+  return toStd(f);
+}
+
+// max |J - J_fd| / max |J| over every entry, J_fd by central differences with step h.
+Real tangentError(Problem& p, const std::vector<Real>& u, Real h) {
+  Vector uv(p.dofs().ownedMap()), f(p.dofs().ownedMap());
+  fromStd(u, uv);
+  auto J = p.createMatrix();
+  p.evaluate(uv, f, J.get());
+  const std::size_t n = u.size();
+  std::vector<Real> dense(n * n, 0.0);
+  Real jmax = 0.0;
+  for (std::size_t r = 0; r < n; ++r) {
+    Matrix::nonconst_local_inds_host_view_type cols("cols", J->getNumEntriesInLocalRow(r));
+    Matrix::nonconst_values_host_view_type vals("vals", cols.extent(0));
+    std::size_t count = 0;
+    J->getLocalRowCopy(LocalIndex(r), cols, vals, count);
+    for (std::size_t k = 0; k < count; ++k) {
+      dense[r * n + J->getColMap()->getGlobalElement(cols(k))] = vals(k);
+      jmax = std::max(jmax, std::abs(vals(k)));
+    }
+  }
+  Real worst = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<Real> up = u, um = u;
+    up[j] += h, um[j] -= h;
+    const auto fp = residual(p, up), fm = residual(p, um);
+    for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, std::abs(dense[i * n + j] - (fp[i] - fm[i]) / (2 * h)));
+  }
+  return worst / jmax;
+}
+
+std::vector<Real> randomDisplacement(std::size_t n, Real amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> d(-amplitude, amplitude);
+  std::vector<Real> u(n);
+  for (Real& v : u) v = d(rng);
+  return u;
+}
+
+TEST(BulkPart, TangentAndOneMaterialPerBody) {
+  auto comm = Tpetra::getDefaultComm();
+  if (comm->getSize() > 1) GTEST_SKIP() << "one rank";
+  auto m = twoBoxes(0.5);
+  auto dofs = Teuchos::rcp(new DofMap(comm, *m, 3));
+  const auto soft = material::NeoHookean::fromYoungPoisson(1.0, 0.3), stiff = material::NeoHookean::fromYoungPoisson(3.0, 0.3);
+  Problem same(dofs, m, Formulation::ThreeD, soft), mixed(dofs, m, Formulation::ThreeD, {soft, stiff});
+  ASSERT_EQ(mixed.bulkParts().size(), 2u);
+  EXPECT_EQ(mixed.bulkParts()[0].numLocalCells() + mixed.bulkParts()[1].numLocalCells(), m->numCells());
+  EXPECT_NEAR(mixed.material(1).youngsModulus(), 3.0, 1e-15);
+  const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.03, 7);
+  const auto f1 = residual(same, u), f3 = residual(mixed, u);
+  // Neo-Hookean at fixed nu: the internal force scales with Y, body by body
+  std::vector<int> nodeBody(m->numNodes());
+  for (const auto& b : m->blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
+  Real fmax = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < f1.size(); ++i) {
+    const Real factor = nodeBody[i / 3] == 1 ? 3.0 : 1.0;
+    fmax = std::max(fmax, std::abs(f3[i]));
+    worst = std::max(worst, std::abs(f3[i] - factor * f1[i]));
+  }
+  EXPECT_LE(worst, 1e-13 * fmax);
+  const Real err = tangentError(mixed, u, 1e-6);
+  std::printf("[bulk part] tet4 + hex8 bodies, two materials: max|J - J_fd|/max|J| = %.2e\n", err);
+  EXPECT_LT(err, 1e-6);
+}
+
+std::shared_ptr<interaction::SurfaceInteraction> methodThree(const mesh::Mesh& m) {
+  interaction::SurfaceInteractionOptions o;
+  o.formulation = interaction::Formulation::ThreeD;
+  o.quadraturePoints = 2;
+  o.cutoff = 2.0;
+  return std::make_shared<interaction::SurfaceInteraction>(m.surfaces, std::vector<Real>{1.0, 1.0},
+                                                           interaction::makePotential("lennard-jones", 10.0, 0.25), o);
+}
+
+// Two boxes 0.3 apart: the bulk alone and the bulk with the interaction, at a random state.
+struct TwoBodies {
+  std::shared_ptr<mesh::Mesh> m = twoBoxes(0.3);
+  Teuchos::RCP<DofMap> dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
+  material::NeoHookean mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
+  Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
+  std::shared_ptr<interaction::SurfaceInteraction> si = methodThree(*m);
+  std::vector<Real> u;
+  explicit TwoBodies(unsigned seed) : u(randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, seed)) {
+    full.setInteraction(si, 1.5);
+  }
+};
+
+TEST(InteractionPart, CoupledTangentAndForcesOnTheBodies) {
+  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "one rank";
+  TwoBodies t(11);
+  auto& [m, dofs, mat, bulk, full, si, u] = t;
+  Vector uv(dofs->ownedMap());
+  fromStd(u, uv);
+  EXPECT_TRUE(full.updateInteractionGraph(uv));
+  EXPECT_TRUE(full.interactionGraphCovers(uv, full.searchRadius()));
+  const auto fb = residual(bulk, u), ff = residual(full, u);
+  // the interaction part's share of f, summed per body, is minus the force on the body
+  const auto forces = full.interactionForces();
+  ASSERT_EQ(forces.size(), 2u);
+  std::vector<int> nodeBody(m->numNodes());
+  for (const auto& b : m->blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
+  Real sum[2][3] = {}, scale = 0.0;  // round-off of f - f_bulk: that of the larger of the two
+  for (std::size_t i = 0; i < ff.size(); ++i) {
+    sum[nodeBody[i / 3]][i % 3] += ff[i] - fb[i];
+    scale = std::max({scale, std::abs(ff[i]), std::abs(fb[i])});
+  }
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[b][i], -sum[b][i], 1e-12 * scale);
+  EXPECT_GT(forces[0][2], 0.0);  // the bodies attract: the lower one is pulled up
+  EXPECT_LT(forces[1][2], 0.0);
+  const Real err = tangentError(full, u, 1e-6);
+  std::printf("[interaction part] two boxes 0.3 apart: forces %.4e, %.4e; max|J - J_fd|/max|J| = %.2e\n",
+              forces[0][2], forces[1][2], err);
+  EXPECT_LT(err, 1e-6);
+}
+
+TEST(Problem, IsTheSumOfItsParts) {
+  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "one rank";
+  TwoBodies t(13);
+  auto& [m, dofs, mat, bulk, full, si, u] = t;
+  const auto fb = residual(bulk, u), ff = residual(full, u);
+  // the interaction evaluated alone, outside Tpetra
+  std::vector<Real> x(m->coords);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] += u[i];
+  std::vector<interaction::PairContribution> c;
+  si->updatePairs(x);
+  si->evaluate(x, c, false);
+  std::vector<Real> fi(x.size(), 0.0);
+  for (const auto& p : c)
+    for (int a = 0; a < p.numRowNodes; ++a)
+      for (int i = 0; i < 3; ++i) fi[3 * std::size_t(p.rowNodes[a]) + i] += p.f[3 * a + i];
+  Real fmax = 0.0, scale = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < ff.size(); ++i) {
+    fmax = std::max(fmax, std::abs(fi[i]));
+    scale = std::max({scale, std::abs(ff[i]), std::abs(fb[i])});
+    worst = std::max(worst, std::abs(ff[i] - fb[i] - fi[i]));
+  }
+  ASSERT_GT(fmax, 1e-3 * scale);  // an interaction that matters next to the bulk
+  EXPECT_LE(worst, 1e-13 * scale);
+  // a problem without interaction has none of its parts
+  EXPECT_EQ(bulk.interaction(), nullptr);
+  EXPECT_TRUE(bulk.interactionForces().empty());
+  EXPECT_EQ(bulk.searchRadius(), 0.0);
+}
+
+}  // namespace
+}  // namespace cgcm::assembly
