@@ -18,5 +18,12 @@ echo "== Method 3 kernel and search, per pair"
 "$build/bin/bench_interaction_kernel"
 echo "== closest-point search: AABB build and queries per Newton iteration"
 "$build/bin/bench_closest_point"
+echo "== the search's share of 3D runs (summary.txt: interaction, closest-point search, solves)"
+"$build/bin/cgcm" inputs/3d/sphere-on-half-space.xml Output/Directory=output/bench-3d-sphere "Output/Print Steps=false" \
+  "Loading/Approach Path={-0.02,0.004}"
+tail -2 output/bench-3d-sphere/summary.txt
+"$build/bin/cgcm" inputs/3d/three-spheres.xml Output/Directory=output/bench-3d-three-spheres "Output/Print Steps=false" \
+  "Loading/Approach Path={0.03,0.041,0.034}"
+tail -2 output/bench-3d-three-spheres/summary.txt
 echo "== a path through folds: displacement against arc-length control"
 bash bench/continuation.sh "$build"

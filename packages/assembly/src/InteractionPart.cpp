@@ -2,6 +2,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <chrono>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -53,7 +54,9 @@ const std::vector<Real>& InteractionPart::surfaceCoordinates(const Vector& u) {
 
 int InteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) {
   const std::vector<Real>& x = surfaceCoordinates(u);
+  const auto t0 = std::chrono::steady_clock::now();
   interaction_->updatePairs(x.data());
+  searchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Map& overlap = *dofs_->overlapMap();
   Matrix::local_matrix_device_type lclJ;
   Teuchos::RCP<const Map> colMap;

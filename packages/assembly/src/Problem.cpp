@@ -109,6 +109,7 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
     const auto ti = Clock::now();
     dropped = interactionPart_->assemble(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J);
     interactionSeconds = secondsSince(ti);
+    timings_.search += interactionPart_->lastSearchSeconds();
   }
   int counts[2] = {failures, dropped}, globalCounts[2] = {0, 0};
   Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, 2, counts, globalCounts);

@@ -34,9 +34,11 @@ struct RunResult {
   std::string failure;              ///< why not
   double assemblySeconds = 0.0;     ///< bulk residual + tangent evaluations
   double interactionSeconds = 0.0;  ///< interaction: search, kernel, scatter
+  double searchSeconds = 0.0;       ///< of which the closest-point search
   double pathSeconds = 0.0;         ///< the whole path, failed attempts included
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
+  std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
 };
 
 /// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,

@@ -45,6 +45,8 @@ class InteractionPart {
   /// J += its tangent. Returns the number of tangent entries that fell
   /// outside J's graph (they are dropped). Collective (the gather).
   int assemble(const Vector& u, const VectorView& f, Matrix* J);
+  /// Seconds the last assemble spent in the closest-point search (AABB trees and queries).
+  double lastSearchSeconds() const { return searchSeconds_; }
 
   /// The couplings (row node, column node) of every pair that can occur for
   /// points within `radius` of another body at u, rows on this rank's overlap
@@ -68,6 +70,7 @@ class InteractionPart {
   Teuchos::RCP<Vector> uSurface_;
   std::vector<Real> coords_;      ///< mesh-wide current coordinates of surface nodes
   std::vector<Real> bodyForces_;  ///< [3 body + i]: this rank's pairs' forces on the bodies, last assemble
+  double searchSeconds_ = 0.0;
 };
 
 }  // namespace cgcm::assembly

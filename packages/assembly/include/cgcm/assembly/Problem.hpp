@@ -26,6 +26,7 @@ struct AssemblyTimings {
   double residual = 0.0;     ///< residual-only evaluations of the bulk
   double jacobian = 0.0;     ///< residual + tangent evaluations of the bulk (incl. fill)
   double interaction = 0.0;  ///< interaction: coordinate gather, search, kernel, scatter
+  double search = 0.0;       ///< the part of `interaction` in the closest-point search (trees and queries)
   int residualCalls = 0;
   int jacobianCalls = 0;
 };

@@ -1,0 +1,64 @@
+#pragma once
+// What a run writes for each accepted state: the contact responses (gap on
+// the axis, contact radius), the load-curve row, the force on every body, the
+// Exodus step and a progress line.
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cgcm/app/Results.hpp"
+#include "cgcm/app/Setup.hpp"
+#include "cgcm/app/Simulation.hpp"
+#include "cgcm/io/CsvWriter.hpp"
+
+namespace cgcm::app {
+
+/// Gap on the axis and contact radius of a two-body contact state.
+class ContactProbe {
+ public:
+  ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem);
+
+  /// Distance along the axis between the apex nodes. Collective.
+  Real gap(const assembly::Vector& u) const;
+
+  /// Radial position where the upper surface is first farther than the
+  /// contact distance from the lower surface (0 if the apex already is): in
+  /// 2D the radius x, in 3D the distance from the vertical line through the
+  /// upper apex. Collective.
+  Real contactRadius(const assembly::Vector& u) const;
+
+ private:
+  ContactGeometry c_;
+  const mesh::Mesh& mesh_;
+  assembly::Problem& problem_;
+  LocalIndex upper_, lower_;
+};
+
+/// Turns converged states into load_curve.csv rows (flushed, so a run that
+/// stops leaves a valid file), body_forces.csv rows, Exodus steps and
+/// progress lines.
+class Recorder {
+ public:
+  Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
+           bool exodus, int parameterIndex, bool print, std::ostream& log);
+
+  /// Records the state x at parameters p; `row` carries step, flags and solver figures. Collective.
+  void record(const assembly::Vector& x, const std::vector<Real>& p, LoadPoint row);
+
+  std::vector<LoadPoint> curve;
+
+ private:
+  const ProblemSetup& setup_;
+  solver::ModelEvaluator& model_;
+  const ContactProbe* probe_;
+  int parameterIndex_;
+  bool root_, print_;
+  std::ostream& log_;
+  assembly::Vector f_;
+  std::vector<std::string> columns_;
+  std::unique_ptr<io::CsvWriter> csv_, bodyCsv_;
+  std::unique_ptr<ResultsWriter> results_;
+};
+
+}  // namespace cgcm::app

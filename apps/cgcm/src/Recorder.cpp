@@ -1,0 +1,118 @@
+#include "cgcm/app/Recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "cgcm/interaction/ClosestPointSearch.hpp"
+
+namespace cgcm::app {
+
+using assembly::Vector;
+
+ContactProbe::ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
+    : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)) {}
+
+Real ContactProbe::gap(const Vector& u) const {
+  const int y = mesh_.dim - 1;
+  return (mesh_.coord(upper_, y) + problem_.nodeValue(u, upper_, y)) -
+         (mesh_.coord(lower_, y) + problem_.nodeValue(u, lower_, y));
+}
+
+Real ContactProbe::contactRadius(const Vector& u) const {
+  const std::vector<Real>& x = problem_.surfaceCoordinates(u);
+  const int dim = mesh_.dim;
+  auto search = interaction::makeClosestPointSearch(dim);
+  search->build(x.data(), problem_.interaction()->targetSurface(c_.lowerBody));
+  // radius: x (the axis is x = 0) in 2D; in 3D the distance from the vertical line through the upper apex
+  const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + problem_.nodeValue(u, upper_, 0) : 0.0,
+                        dim == 3 ? mesh_.coord(upper_, 1) + problem_.nodeValue(u, upper_, 1) : 0.0};
+  std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of upper surface nodes
+  const auto& s = mesh_.surfaces[c_.upperBody];
+  std::vector<LocalIndex> nodes(s.facets);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const Real reach = 20.0 * c_.contactDistance;
+  for (LocalIndex n : nodes) {
+    const Real* p = &x[std::size_t(n) * dim];
+    const auto proj = search->project(p, reach);
+    const Real radius = dim == 3 ? std::hypot(p[0] - apex[0], p[1] - apex[1]) : p[0];
+    profile.push_back({radius, proj.found() ? proj.distance : std::numeric_limits<Real>::infinity()});
+  }
+  std::sort(profile.begin(), profile.end());
+  if (profile.empty() || profile[0].second >= c_.contactDistance) return 0.0;
+  for (std::size_t k = 1; k < profile.size(); ++k)
+    if (profile[k].second >= c_.contactDistance) {
+      const auto& [r0, d0] = profile[k - 1];
+      const auto& [r1, d1] = profile[k];
+      if (!std::isfinite(d1)) return r1;
+      return r0 + (c_.contactDistance - d0) / (d1 - d0) * (r1 - r0);
+    }
+  return profile.back().first;
+}
+
+Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
+         bool exodus, int parameterIndex, bool print, std::ostream& log)
+    : setup_(setup), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
+      root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log), f_(disc.model->map()) {
+  columns_ = {"step", "u"};
+  if (parameterIndex_ > 0) columns_.push_back(model_.parameterNames()[parameterIndex_]);
+  columns_.push_back("P");
+  if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius"});
+  if (setup_.balance) columns_.push_back("P_lower");
+  columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
+  createOnRoot(*disc.dofs->comm(), [&] { csv_ = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns_); });
+  if (disc.interaction)
+    createOnRoot(*disc.dofs->comm(), [&] {
+      bodyCsv_ = std::make_unique<io::CsvWriter>(dir + "/body_forces.csv",
+                                                 std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
+    });
+  if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, columns_);
+}
+
+void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
+  model_.evaluateUnconstrained(x, p, f_);
+  const auto& loadNodes = setup_.mesh->nodeSet(setup_.load.nodeSet);
+  row.u = p[0];
+  row.parameter = p[std::size_t(std::max(parameterIndex_, 0))];
+  row.P = setup_.load.sign * setup_.load.scale *
+          model_.problem().sumOverNodes(f_, loadNodes, setup_.load.component);
+  if (probe_) {
+    row.gap = probe_->gap(x);
+    row.contactRadius = probe_->contactRadius(x);
+  }
+  if (setup_.balance)
+    row.Plower = setup_.balance->sign * setup_.balance->scale * model_.problem().sumOverNodes(
+                                            f_, setup_.mesh->nodeSet(setup_.balance->nodeSet),
+                                            setup_.balance->component);
+  curve.push_back(row);
+  std::vector<double> values{double(row.step), row.u};
+  if (parameterIndex_ > 0) values.push_back(row.parameter);
+  values.push_back(row.P);
+  if (probe_) values.insert(values.end(), {row.gap, row.contactRadius});
+  if (setup_.balance) values.push_back(row.Plower);
+  values.insert(values.end(), {double(row.newtonIterations), row.stable ? 1.0 : 0.0, row.fold ? 1.0 : 0.0,
+                               row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
+  if (results_) results_->write(x, values);
+  // the interaction force on each body at this state (the evaluation above)
+  const auto forces = model_.problem().interactionForces();  // collective; empty without interaction
+  if (!root_) return;
+  csv_->row(values);
+  for (std::size_t b = 0; bodyCsv_ && b < forces.size(); ++b)
+    bodyCsv_->row({double(row.step), row.u, double(b), forces[b][0], forces[b][1], forces[b][2]});
+  if (!print_) return;
+  char line[300];
+  std::string extra;
+  if (parameterIndex_ > 0) extra = "  " + columns_[2] + " = " + std::to_string(row.parameter);
+  if (probe_) extra += "  gap = " + std::to_string(row.gap);
+  std::snprintf(line, sizeof line, "step %4d  u = %+.6e%s  P = %+.6e  newton %2d  |f| = %.2e%s%s%s%s\n", row.step,
+                row.u, extra.c_str(), row.P, row.newtonIterations, row.residual, row.stable ? "" : "  unstable",
+                row.fold ? "  FOLD" : "", row.jump ? "  JUMP" : "",
+                row.cutbacks ? ("  (" + std::to_string(row.cutbacks) + " cut-backs)").c_str() : "");
+  log_ << line << std::flush;
+}
+
+std::vector<LoadPoint> curve;
+
+}  // namespace cgcm::app

@@ -1,0 +1,66 @@
+#include "cgcm/app/Summary.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include "cgcm/app/PathAnalysis.hpp"
+
+namespace cgcm::app {
+
+void writeSummary(const std::string& path, const RunResult& result, const std::string& parameter, bool arcLength,
+                  std::ostream* echo) {
+  std::ofstream sum(path);
+  auto both = [&](const char* text) {
+    sum << text;
+    if (echo) *echo << "cgcm: " << text;
+  };
+  char buf[400];
+  both(result.completed ? "completed\n" : ("stopped: " + result.failure + "\n").c_str());
+  const auto& c = result.curve;
+  if (!c.empty()) {
+    const auto minIt =
+        std::min_element(c.begin(), c.end(), [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
+    std::snprintf(buf, sizeof buf, "P_min = %.10g at u = %.10g (step %d)\n", minIt->P, minIt->u, minIt->step);
+    both(buf);
+  }
+  for (const auto& pt : c)
+    if (pt.fold) {
+      const std::string other =
+          parameter == "u" ? "" : ", " + parameter + " = " + std::to_string(pt.parameter);
+      std::snprintf(buf, sizeof buf, "fold at step %d: u = %.10g%s, P = %.10g, gap = %.6g, contact radius = %.6g\n",
+                    pt.step, pt.u, other.c_str(), pt.P, pt.gap, pt.contactRadius);
+      both(buf);
+    }
+  if (parameter == "u") {
+    const auto path = arcLength ? displacementControlPath(c) : c;
+    for (const auto& j : jumpsOf(path)) {
+      std::snprintf(buf, sizeof buf, "jump under displacement control at u = %.10g: P %.10g -> %.10g, gap %.6g -> %.6g\n",
+                    j.from.u, j.from.P, j.to.P, j.from.gap, j.to.gap);
+      both(buf);
+    }
+    std::snprintf(buf, sizeof buf, "hysteresis energy (loop of the displacement-controlled path) = %.10g\n",
+                  hysteresisEnergy(path));
+    both(buf);
+  }
+  int iterations = 0, unstable = 0;
+  for (const auto& pt : c) iterations += pt.newtonIterations, unstable += pt.stable ? 0 : 1;
+  std::snprintf(buf, sizeof buf,
+                "states = %zu (%d unstable), Newton iterations = %d (%.2f per state), continuation steps = %d, "
+                "graph restarts = %d\n",
+                c.size(), unstable, iterations, double(iterations) / std::max<std::size_t>(1, c.size()),
+                result.continuationSteps, result.graphRestarts);
+  both(buf);
+  std::snprintf(buf, sizeof buf, "Jacobian at the end: %zu rows, %zu entries (%.1f per row)\n",
+                result.matrixRows, result.matrixEntries,
+                double(result.matrixEntries) / std::max<std::size_t>(1, result.matrixRows));
+  both(buf);
+  std::snprintf(buf, sizeof buf,
+                "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s (closest-point search "
+                "%.3f s) + linear solves, NOX and LOCA %.3f s\n",
+                result.pathSeconds, result.assemblySeconds, result.interactionSeconds, result.searchSeconds,
+                result.pathSeconds - result.assemblySeconds - result.interactionSeconds);
+  both(buf);
+}
+
+}  // namespace cgcm::app
