@@ -17,8 +17,7 @@ DefineConstant[
   lcContact = {0.04, Name "Parameters/Mesh size in the contact zone"},
   zone = {0.35, Name "Parameters/Radius of the contact zone"},
   lcSphere = {0.25, Name "Parameters/Mesh size on the rest of the sphere"},
-  lcFar = {2.0, Name "Parameters/Mesh size far from the contact"},
-  hex = {0, Name "Parameters/Split every tetrahedron into 4 hexahedra (1)"}
+  lcFar = {2.0, Name "Parameters/Mesh size far from the contact"}
 ];
 
 zc = gap + R;
@@ -58,9 +57,6 @@ Background Field = 5;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
-If (hex == 1)
-  Mesh.SubdivisionAlgorithm = 2;  // all hexahedra (and quadrilateral faces)
-EndIf
 
 Physical Volume("body:sphere") = {1};
 Physical Volume("body:half-space") = {2};
