@@ -166,7 +166,10 @@ RCP<const ParameterList> validParameters() {
             atLeast(0.0));
   inter.set("epsilon", 0.0, "physical input: energy well of the pair potential (with r0)", atLeast(0.0));
   inter.set("beta0", 1.0, "reference particle density of both bodies", atLeast(1e-300));
-  inter.set("Quadrature Points", 4, "Gauss points per surface segment", intAtLeast(1));
+  inter.set("Quadrature Points", 4,
+            "Gauss points per surface segment; in 3D per direction of a facet (n x n on a quadrilateral; on a "
+            "triangle 1, 6, 7 points for n = 1, 2, 3 and 6 n (n + 1) beyond), and 2 unless given",
+            intAtLeast(1));
   inter.set("Cutoff", 10.0, "interaction cutoff in units of r0: farther points are skipped", atLeast(1.0));
   inter.set("Cutoff Taper", 0.2,
             "fraction of the cutoff over which the traction is blended smoothly (C1) to zero, 0 .. 0.9; "
@@ -259,7 +262,9 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   s.options.formulation = formulation == assembly::Formulation::Axisymmetric ? interaction::Formulation::Axisymmetric
                           : formulation == assembly::Formulation::ThreeD     ? interaction::Formulation::ThreeD
                                                                               : interaction::Formulation::PlaneStrain;
-  s.options.quadraturePoints = in.get<int>("Quadrature Points");
+  // 3D: n x n points per quad, 6 or 7 per triangle at n = 2, 3, but 6 n (n + 1) beyond: 2 unless set
+  const bool threeD = formulation == assembly::Formulation::ThreeD;
+  s.options.quadraturePoints = threeD && in.getEntry("Quadrature Points").isDefault() ? 2 : in.get<int>("Quadrature Points");
   s.options.cutoff = in.get<double>("Cutoff") * phys.r0;
   s.options.cutoffTaper = in.get<double>("Cutoff Taper");
   s.options.projectionSmoothing = in.get<double>("Projection Smoothing") * phys.r0;
@@ -400,6 +405,9 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
   std::string mirrored;
   for (const std::string& plane : g.get<Teuchos::Array<std::string>>("Mirror Planes")) {
     const int axis = plane == "x" ? 0 : plane == "y" ? 1 : plane == "z" ? 2 : -1;
+    if (axis == 0 && s.formulation == assembly::Formulation::Axisymmetric)
+      throw InputError("Geometry/Mirror Planes: \"x\" with Problem/Formulation = \"axisymmetric\": x is the radius, "
+                       "the mesh cannot be mirrored across the axis; allowed: \"y\"");
     if (axis < 0 || axis >= m->dim || mirrored.find(plane) != std::string::npos)
       throw InputError("Geometry/Mirror Planes: \"" + plane + "\" " +
                        (axis >= 0 && axis < m->dim ? "is given twice" : "is not a plane of this mesh") +
@@ -442,7 +450,8 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
       for (const char* set : {"apex", "lower apex"})
         if (m->nodeSet(set).size() != 1)
           fail("node set \"" + std::string(set) + "\" has " + std::to_string(m->nodeSet(set).size()) +
-               " nodes; it must be one point");
+               " nodes; it must be one point" +
+               (mirrored.empty() ? std::string() : " (a point off a mirror plane of Geometry/Mirror Planes is doubled)"));
       s.contact = ContactGeometry{"apex", "lower apex", bodyOf("apex"), bodyOf("lower apex"), rS0};
       // u = 0 where the apexes are r_S0 apart, as in the built-in benchmark
       // (the driven body approaches the other one as u grows)
@@ -450,7 +459,8 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
                                        m->coord(m->nodeSet("lower apex").front(), vertical));
       offset = -drive * (rS0 - separation);
     }
-    if (m->nodeSets.count("fixed")) s.balance = ForceResponse{"fixed", vertical, 1.0};
+    // the support reacts against the drive: P_lower ~ P whichever way the drive goes
+    if (m->nodeSets.count("fixed")) s.balance = ForceResponse{"fixed", vertical, -drive};
   } else {
     s.forceScale = s.formulation == assembly::Formulation::PlaneStrain ? Y * R0 : Y * R0 * R0;
   }
@@ -564,6 +574,7 @@ void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
   std::string known;
   for (const auto& n : names) known += (known.empty() ? "\"" : ", \"") + n + "\"";
   std::vector<material::NeoHookean> materials(m.numBodies, s.material);
+  std::vector<char> hasEntry(m.numBodies, 0);
   const ParameterList& validMaterial = validParameters()->sublist("Material");
   for (auto it = bodies.begin(); it != bodies.end(); ++it) {
     const std::string name = bodies.name(it);
@@ -601,12 +612,23 @@ void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
     const auto law = own.get<std::string>("Volumetric Energy") == "(Lambda/2)(ln J)^2"
                          ? material::VolumetricLaw::LogSquared
                          : material::VolumetricLaw::QuadraticJ;
+    hasEntry[found - names.begin()] = 1;
     materials[found - names.begin()] = material::NeoHookean::fromYoungPoisson(
         own.get<double>("Young's Modulus"), own.get<double>("Poisson's Ratio"), law);
     std::ostringstream o;
     o << "body \"" << name << "\": Young's modulus " << own.get<double>("Young's Modulus") << ", Poisson's ratio "
       << own.get<double>("Poisson's Ratio");
     s.report.push_back(o.str());
+  }
+  // a mirror image (Geometry/Mirror Planes) is made of its original unless it has an entry of its own
+  for (int b = 0; b < m.numBodies; ++b) {
+    if (hasEntry[b]) continue;
+    std::string base = names[b];
+    while (base.size() > 14 && base.compare(base.size() - 14, 13, " mirrored in ") == 0) base.resize(base.size() - 14);
+    const auto original = std::find(names.begin(), names.end(), base);
+    if (original == names.end() || !hasEntry[original - names.begin()]) continue;
+    materials[b] = materials[original - names.begin()];
+    s.report.push_back("body \"" + names[b] + "\": the material of \"" + base + "\" (its mirror image)");
   }
   s.bodyMaterials = std::move(materials);
 }

@@ -160,8 +160,8 @@ bool Problem::updateInteractionGraph(const Vector& u, bool keepExisting, Real ra
   Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, missing, Teuchos::outArg(anyMissing));
   if (!anyMissing && !graph_.is_null()) return false;
   if (keepExisting) wanted.insert(wanted.end(), extraCouplings_.begin(), extraCouplings_.end());
-  extraCouplings_.clear();
   setExtraCouplings(std::move(wanted));
+  graph_ = Teuchos::null;  // every rank rebuilds (the fill is collective), also one whose couplings did not change
   graph();
   return true;
 }

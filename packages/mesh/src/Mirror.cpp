@@ -22,8 +22,8 @@ const std::vector<int>& reflectedOrder(int nodes, bool facet, int dim) {
 }  // namespace
 
 void mirror(Mesh& mesh, int axis, Real tolerance) {
-  const char name = "xyz"[axis];
   if (axis < 0 || axis >= mesh.dim) throw InputError("mirror plane axis out of range");
+  const char name = "xyz"[axis];
   const LocalIndex nn = mesh.numNodes();
   Real extent = 0.0;
   for (LocalIndex n = 0; n < nn; ++n) extent = std::max(extent, std::abs(mesh.coord(n, axis)));
