@@ -73,19 +73,22 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
 
 void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
   model_.evaluateUnconstrained(x, p, f_);
-  const auto& loadNodes = setup_.mesh->nodeSet(setup_.load.nodeSet);
+  auto resultant = [&](const ForceResponse& r) {  // collective
+    const auto& nodes = setup_.mesh->nodeSet(r.nodeSet);
+    if (r.direction.empty()) return r.sign * r.scale * model_.problem().sumOverNodes(f_, nodes, r.component);
+    Real sum = 0.0;
+    for (std::size_t i = 0; i < r.direction.size(); ++i)
+      sum += r.direction[i] * model_.problem().sumOverNodes(f_, nodes, int(i));
+    return r.scale * sum;
+  };
   row.u = p[0];
   row.parameter = p[std::size_t(std::max(parameterIndex_, 0))];
-  row.P = setup_.load.sign * setup_.load.scale *
-          model_.problem().sumOverNodes(f_, loadNodes, setup_.load.component);
+  row.P = resultant(setup_.load);
   if (probe_) {
     row.gap = probe_->gap(x);
     row.contactRadius = probe_->contactRadius(x);
   }
-  if (setup_.balance)
-    row.Plower = setup_.balance->sign * setup_.balance->scale * model_.problem().sumOverNodes(
-                                            f_, setup_.mesh->nodeSet(setup_.balance->nodeSet),
-                                            setup_.balance->component);
+  if (setup_.balance) row.Plower = resultant(*setup_.balance);
   curve.push_back(row);
   std::vector<double> values{double(row.step), row.u};
   if (parameterIndex_ > 0) values.push_back(row.parameter);

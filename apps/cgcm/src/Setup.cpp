@@ -85,6 +85,11 @@ RCP<const ParameterList> validParameters() {
                "Type = gmsh: the node set \"driven\" moves by u \"down\" (-y in 2D, -z in 3D) or \"up\" (+y, +z) "
                "along the last axis; the approach closes the gap either way",
                choices({"down", "up"}));
+  geometry.set("Drive Vector", Teuchos::Array<double>{},
+               "Type = gmsh: a direction d (one entry per dimension, normalised) along which \"driven\" moves by "
+               "u d, every component prescribed, e.g. {1, 0, -1} for an oblique approach; P is the resultant along d. "
+               "Replaces Drive Direction and Driven Components; u is the plain displacement (no apex offset). "
+               "Empty: along the last axis (Drive Direction)");
   geometry.set("Driven Components", "vertical",
                "Type = gmsh: which displacement components of \"driven\" are prescribed: \"vertical\" (the last "
                "one; the others are free, as on the benchmark's equator) or \"all\" (the others are 0: a clamped "
@@ -390,6 +395,31 @@ std::map<std::string, double> meshNumbers(const ParameterList& numbers) {
   return out;
 }
 
+// Geometry/Drive Vector, normalised and checked against the mesh (empty when not given).
+std::vector<Real> driveDirection(const ParameterList& g, const mesh::Mesh& m) {
+  const auto& given = g.get<Teuchos::Array<double>>("Drive Vector");
+  if (given.empty()) return {};
+  if (!g.getEntry("Drive Direction").isDefault() || !g.getEntry("Driven Components").isDefault())
+    throw InputError("Geometry/Drive Vector: give it, or Drive Direction and Driven Components, not both");
+  if (int(given.size()) != m.dim)
+    throw InputError("Geometry/Drive Vector: " + std::to_string(given.size()) + " entries; the mesh is " +
+                     std::to_string(m.dim) + "D, give " + std::to_string(m.dim));
+  Real norm = 0.0;
+  for (double v : given) norm += v * v;
+  norm = std::sqrt(norm);
+  if (!(norm > 0.0) || !std::isfinite(norm))
+    throw InputError("Geometry/Drive Vector: a finite, nonzero direction is expected");
+  std::vector<Real> d;
+  for (double v : given) d.push_back(v / norm);
+  for (int i = 0; i < m.dim; ++i) {
+    const std::string plane = std::string("symmetry ") + "xyz"[i];
+    if (m.nodeSets.count(plane) && std::abs(d[i]) > 1e-12)
+      throw InputError("Geometry/Drive Vector: its " + std::string(1, "xyz"[i]) + " component moves \"driven\" "
+                       "across the symmetry plane of \"" + plane + "\"; a symmetric model is driven along it");
+  }
+  return d;
+}
+
 // A mesh from gmsh with the physical-group convention of meshes/README.md
 // mapped to boundary conditions; Lennard-Jones between all bodies when there
 // are several.
@@ -441,6 +471,7 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
   Real offset = 0.0;
   const bool up = g.get<std::string>("Drive Direction") == "up";
   const Real drive = up ? 1.0 : -1.0;  // displacement of "driven" along the last axis per unit u
+  const std::vector<Real> driveVector = driveDirection(g, *m);  // empty: along the last axis
   if (m->numBodies > 1) {
     s.interaction = buildInteraction(deck.sublist("Interaction"), R0, Y, s.material.poissonRatio(), R0,
                                      s.formulation, s.report, s.forceScale);
@@ -457,7 +488,7 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
       // (the driven body approaches the other one as u grows)
       const Real separation = std::abs(m->coord(m->nodeSet("apex").front(), vertical) -
                                        m->coord(m->nodeSet("lower apex").front(), vertical));
-      offset = -drive * (rS0 - separation);
+      if (driveVector.empty()) offset = -drive * (rS0 - separation);
     }
     // the support reacts against the drive: P_lower ~ P whichever way the drive goes
     if (m->nodeSets.count("fixed")) s.balance = ForceResponse{"fixed", vertical, -drive};
@@ -478,6 +509,19 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
       s.report.push_back("P = " + std::to_string(int(s.load.scale)) +
                          " x the resultant on \"driven\": the force on the whole body of the mesh's symmetry planes (" +
                          planes + ")");
+  }
+  if (!driveVector.empty()) {
+    s.conditions.clear();
+    s.initialMotion.clear();
+    for (int i = 0; i < dim; ++i) {
+      s.conditions.push_back({"driven", i, 0.0, driveVector[i]});
+      s.initialMotion.push_back({"driven body", i, 0.0, driveVector[i]});
+    }
+    s.load.direction = driveVector;
+    if (s.balance) {
+      s.balance->direction = driveVector;
+      for (Real& v : s.balance->direction) v = -v;
+    }
   }
   if (s.balance) s.balance->scale = s.load.scale;
   if (m->nodeSets.count("fixed"))

@@ -25,12 +25,14 @@ struct DisplacementCondition {
 };
 
 /// A resultant force: sign * scale * sum of the internal force over a node
-/// set (scale: 2 per symmetry plane of a 3D mesh, for the whole body's force).
+/// set (scale: 2 per symmetry plane of a 3D mesh, for the whole body's force);
+/// with a direction, its component along it instead of `component`, `sign`.
 struct ForceResponse {
   std::string nodeSet;
   int component;
   Real sign;
   Real scale = 1.0;
+  std::vector<Real> direction = {};  ///< unit vector (dim entries), or empty
 };
 
 /// The interaction between the bodies (Method 3) and its scales.
