@@ -2,9 +2,11 @@
 
 #include <cstdlib>
 
+#include <Teuchos_FileInputSource.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -18,6 +20,70 @@ std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t");
   const auto e = s.find_last_not_of(" \t");
   return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+long parseInteger(const std::string& path, const std::string& text) {
+  char* end = nullptr;
+  const std::string t = trim(text);
+  const long v = std::strtol(t.c_str(), &end, 10);
+  if (t.empty() || *end != '\0') throw InputError(path + ": \"" + text + "\" is not an integer");
+  return v;
+}
+
+double parseFinite(const std::string& path, const std::string& text) {
+  const double v = parseDouble(path, text);
+  if (!std::isfinite(v)) throw InputError(path + ": \"" + trim(text) + "\" is not a finite number");
+  return v;
+}
+
+// Teuchos reads type="double" value="abc" as 0 without a word: every number of
+// the XML file is parsed again here, strictly, with its parameter's path.
+void checkXmlNumbers(const Teuchos::XMLObject& node, const std::string& prefix) {
+  for (int i = 0; i < node.numChildren(); ++i) {
+    const Teuchos::XMLObject& child = node.getChild(i);
+    if (!child.hasAttribute("name")) continue;
+    const std::string path = prefix + child.getAttribute("name");
+    if (child.getTag() == "ParameterList") {
+      checkXmlNumbers(child, path + "/");
+      continue;
+    }
+    if (child.getTag() != "Parameter" || !child.hasAttribute("type") || !child.hasAttribute("value")) continue;
+    const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
+    if (type == "double") parseFinite(path, value);
+    if (type == "int") parseInteger(path, value);
+    if (type == "Array(double)" || type == "Array(int)") {
+      const auto open = value.find('{'), close = value.rfind('}');
+      if (open == std::string::npos || close == std::string::npos || close < open)
+        throw InputError(path + ": \"" + value + "\" is not an array; write {a, b, c}");
+      std::stringstream items(value.substr(open + 1, close - open - 1));
+      for (std::string item; std::getline(items, item, ',');)
+        if (!trim(item).empty()) type == "Array(double)" ? void(parseFinite(path, item)) : void(parseInteger(path, item));
+    }
+  }
+}
+
+// Numbers given as text (type="string" value="2.5") where a number is expected
+// become numbers, or an InputError naming the parameter; doubles (and arrays
+// of doubles) must be finite.
+void normaliseNumbers(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& prefix) {
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string name = deck.name(it), path = prefix + name;
+    if (!valid.isParameter(name)) continue;  // Teuchos names unknown parameters
+    const auto& v = valid.getEntry(name);
+    auto& e = deck.getEntry(name);
+    if (deck.isSublist(name)) {
+      if (valid.isSublist(name)) normaliseNumbers(deck.sublist(name), valid.sublist(name), path + "/");
+      continue;
+    }
+    if (v.isType<double>() && e.isType<std::string>()) e.setValue(parseDouble(path, e.getValue<std::string>(nullptr)));
+    if (v.isType<double>() && e.isType<int>()) e.setValue(double(e.getValue<int>(nullptr)));
+    if (v.isType<int>() && e.isType<std::string>()) e.setValue(int(parseInteger(path, e.getValue<std::string>(nullptr))));
+    if (e.isType<double>() && !std::isfinite(e.getValue<double>(nullptr)))
+      throw InputError(path + ": " + std::to_string(e.getValue<double>(nullptr)) + " is not a finite number");
+    if (e.isType<Teuchos::Array<double>>())
+      for (double x : e.getValue<Teuchos::Array<double>>(nullptr))
+        if (!std::isfinite(x)) throw InputError(path + ": an entry is " + std::to_string(x) + ", not a finite number");
+  }
 }
 
 // Lists the names of a sublist's entries, for error messages.
@@ -46,11 +112,14 @@ double parseDouble(const std::string& path, const std::string& text) {
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
   std::ifstream probe(path);
   if (!probe) throw InputError("cannot read the input deck \"" + path + "\"");
+  Teuchos::RCP<Teuchos::ParameterList> deck;
   try {
-    return Teuchos::getParametersFromXmlFile(path);
+    deck = Teuchos::getParametersFromXmlFile(path);
   } catch (const std::exception& e) {
     throw InputError("input deck \"" + path + "\" is not a valid XML parameter list: " + e.what());
   }
+  checkXmlNumbers(Teuchos::FileInputSource(path).getObject(), "");
+  return deck;
 }
 
 void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
@@ -132,6 +201,7 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
 }
 
 void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid) {
+  normaliseNumbers(deck, valid, "");
   try {
     deck.validateParametersAndSetDefaults(valid);
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
