@@ -6,6 +6,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -62,6 +63,43 @@ void checkXmlNumbers(const Teuchos::XMLObject& node, const std::string& prefix) 
   }
 }
 
+template <class T>
+std::string numberText(T v) {
+  std::ostringstream os;
+  os.precision(12);
+  os << v;
+  return os.str();
+}
+
+// A value outside its validator's range or choices, in one line: "<path> = <value>: <why>; allowed: ...".
+void checkRange(const Teuchos::ParameterEntry& e, const Teuchos::ParameterEntry& v, const std::string& path) {
+  if (v.validator().is_null()) return;
+  const std::string doc = v.docString().empty() ? "" : " (" + v.docString() + ")";
+  auto bounds = [&](auto value, const auto& validator) {
+    const bool low = validator->hasMin() && value < validator->getMin();
+    const bool high = validator->hasMax() && value > validator->getMax();
+    if (!low && !high) return;
+    std::string allowed = validator->hasMin() ? numberText(validator->getMin()) : "";
+    allowed += validator->hasMax() ? " .. " + numberText(validator->getMax()) : " or more";
+    throw InputError(path + " = " + numberText(value) + ": out of range; allowed: " + allowed + doc);
+  };
+  if (e.isType<double>())
+    if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<double>>(v.validator()); !d.is_null())
+      bounds(e.getValue<double>(nullptr), d);
+  if (e.isType<int>())
+    if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<int>>(v.validator()); !d.is_null())
+      bounds(e.getValue<int>(nullptr), d);
+  if (e.isType<std::string>())
+    if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::StringValidator>(v.validator()); !d.is_null()) {
+      const auto& choices = *d->validStringValues();
+      const std::string value = e.getValue<std::string>(nullptr);
+      if (std::find(choices.begin(), choices.end(), value) != choices.end()) return;
+      std::string allowed;
+      for (const auto& c : choices) allowed += (allowed.empty() ? "\"" : ", \"") + c + "\"";
+      throw InputError(path + " = \"" + value + "\": not a choice; allowed: " + allowed);
+    }
+}
+
 // Numbers given as text (type="string" value="2.5") where a number is expected
 // become numbers, or an InputError naming the parameter; doubles (and arrays
 // of doubles) must be finite.
@@ -83,6 +121,7 @@ void normaliseNumbers(Teuchos::ParameterList& deck, const Teuchos::ParameterList
     if (e.isType<Teuchos::Array<double>>())
       for (double x : e.getValue<Teuchos::Array<double>>(nullptr))
         if (!std::isfinite(x)) throw InputError(path + ": an entry is " + std::to_string(x) + ", not a finite number");
+    checkRange(e, v, path);
   }
 }
 
