@@ -395,10 +395,15 @@ std::map<std::string, double> meshNumbers(const ParameterList& numbers) {
   return out;
 }
 
-// Geometry/Drive Vector, normalised and checked against the mesh (empty when not given).
+// The unit direction of the drive: Geometry/Drive Vector, normalised and checked against the mesh, or
+// the last axis, down or up (Drive Direction).
 std::vector<Real> driveDirection(const ParameterList& g, const mesh::Mesh& m) {
   const auto& given = g.get<Teuchos::Array<double>>("Drive Vector");
-  if (given.empty()) return {};
+  if (given.empty()) {
+    std::vector<Real> d(m.dim, 0.0);
+    d.back() = g.get<std::string>("Drive Direction") == "up" ? 1.0 : -1.0;
+    return d;
+  }
   if (!g.getEntry("Drive Direction").isDefault() || !g.getEntry("Driven Components").isDefault())
     throw InputError("Geometry/Drive Vector: give it, or Drive Direction and Driven Components, not both");
   if (int(given.size()) != m.dim)
@@ -469,9 +474,12 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
 
   const Real R0 = g.get<double>("Sphere Radius"), Y = s.material.youngsModulus();
   Real offset = 0.0;
-  const bool up = g.get<std::string>("Drive Direction") == "up";
-  const Real drive = up ? 1.0 : -1.0;  // displacement of "driven" along the last axis per unit u
-  const std::vector<Real> driveVector = driveDirection(g, *m);  // empty: along the last axis
+  // The drive: "driven" moves by u d. Along the last axis (Drive Direction) only that component is
+  // prescribed unless Driven Components = all; along a Drive Vector every component is.
+  const bool alongVector = !g.get<Teuchos::Array<double>>("Drive Vector").empty();
+  const std::vector<Real> d = driveDirection(g, *m);
+  const Real drive = d[vertical];
+  const bool allComponents = alongVector || g.get<std::string>("Driven Components") == "all";
   if (m->numBodies > 1) {
     s.interaction = buildInteraction(deck.sublist("Interaction"), R0, Y, s.material.poissonRatio(), R0,
                                      s.formulation, s.report, s.forceScale);
@@ -488,18 +496,23 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
       // (the driven body approaches the other one as u grows)
       const Real separation = std::abs(m->coord(m->nodeSet("apex").front(), vertical) -
                                        m->coord(m->nodeSet("lower apex").front(), vertical));
-      if (driveVector.empty()) offset = -drive * (rS0 - separation);
+      if (!alongVector) offset = -drive * (rS0 - separation);
     }
     // the support reacts against the drive: P_lower ~ P whichever way the drive goes
-    if (m->nodeSets.count("fixed")) s.balance = ForceResponse{"fixed", vertical, -drive};
+    if (m->nodeSets.count("fixed")) {
+      s.balance = ForceResponse{"fixed", vertical, -drive};
+      for (Real di : d) s.balance->direction.push_back(-di);
+    }
   } else {
     s.forceScale = s.formulation == assembly::Formulation::PlaneStrain ? Y * R0 : Y * R0 * R0;
   }
-  s.conditions = {{"driven", vertical, offset, drive}};
-  if (g.get<std::string>("Driven Components") == "all")
-    for (int i = 0; i < vertical; ++i) s.conditions.push_back({"driven", i, 0.0, 0.0});
-  s.initialMotion = {{"driven body", vertical, offset, drive}};
+  for (int i = 0; i < dim; ++i) {
+    const Real shift = i == vertical ? offset : 0.0;
+    if (i == vertical || allComponents) s.conditions.push_back({"driven", i, shift, d[i]});
+    if (d[i] != 0.0) s.initialMotion.push_back({"driven body", i, shift, d[i]});
+  }
   s.load = {"driven", vertical, drive};  // P > 0: compressive
+  s.load.direction = d;
   if (dim == 3) {
     // a quarter or half model: P is the force on the whole body
     std::string planes;
@@ -509,19 +522,6 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
       s.report.push_back("P = " + std::to_string(int(s.load.scale)) +
                          " x the resultant on \"driven\": the force on the whole body of the mesh's symmetry planes (" +
                          planes + ")");
-  }
-  if (!driveVector.empty()) {
-    s.conditions.clear();
-    s.initialMotion.clear();
-    for (int i = 0; i < dim; ++i) {
-      s.conditions.push_back({"driven", i, 0.0, driveVector[i]});
-      s.initialMotion.push_back({"driven body", i, 0.0, driveVector[i]});
-    }
-    s.load.direction = driveVector;
-    if (s.balance) {
-      s.balance->direction = driveVector;
-      for (Real& v : s.balance->direction) v = -v;
-    }
   }
   if (s.balance) s.balance->scale = s.load.scale;
   if (m->nodeSets.count("fixed"))
