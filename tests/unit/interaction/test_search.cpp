@@ -392,13 +392,21 @@ TEST(TriangleProjection, IsTheClosestPointOfTheTriangle) {
   for (int r = 0; r < 7; ++r) EXPECT_GT(regions[r], 0) << "region " << r << " never met";
 }
 
-TEST(ClosestPointSearch3D, MatchesBruteForceOnFacesEdgesAndVertices) {
+// The wavy sheet and ball with n cells per side, in both searches.
+struct BothSearches3D {
   std::vector<Real> coords;
-  const mesh::Surface surf = wavySheetAndBall(coords, 24);
+  mesh::Surface surf;
   BruteForceTriangleSearch3D brute;
   AabbTreeSearch3D tree;
-  brute.build(coords, surf);
-  tree.build(coords, surf);
+  explicit BothSearches3D(int n) : surf(wavySheetAndBall(coords, n)) {
+    brute.build(coords, surf);
+    tree.build(coords, surf);
+  }
+};
+
+TEST(ClosestPointSearch3D, MatchesBruteForceOnFacesEdgesAndVertices) {
+  BothSearches3D s(24);
+  auto& [coords, surf, brute, tree] = s;
   ASSERT_EQ(tree.numFacets(), brute.numFacets());
   std::mt19937 rng(17);
   std::uniform_real_distribution<Real> ux(-0.3, 2.3), uz(-0.6, 1.8);
@@ -408,13 +416,10 @@ TEST(ClosestPointSearch3D, MatchesBruteForceOnFacesEdgesAndVertices) {
     const Real x[3] = {ux(rng), ux(rng), uz(rng)};
     const Projection pb = brute.project(x, inf);
     expectSameProjection3D(tree.project(x, inf), pb, x);
-    Real xi[2], p[3];
+    Real xi[2], p[3], t[9];
     int region;
-    const Real* t = nullptr;
-    std::vector<Real> tri(9);
     for (int v = 0; v < 3; ++v)
-      for (int k = 0; k < 3; ++k) tri[3 * v + k] = coords[3 * std::size_t(surf.facets[3 * pb.facet + v]) + k];
-    t = tri.data();
+      for (int k = 0; k < 3; ++k) t[3 * v + k] = coords[3 * std::size_t(surf.facets[3 * pb.facet + v]) + k];
     projectOntoTriangle(x, t, t + 3, t + 6, xi, p, region);
     ++regions[region];
   }
@@ -439,12 +444,8 @@ TEST(ClosestPointSearch3D, MatchesBruteForceOnFacesEdgesAndVertices) {
 }
 
 TEST(ClosestPointSearch3D, FacetsNearCoverEveryFacetWithinTheRadius) {
-  std::vector<Real> coords;
-  const mesh::Surface surf = wavySheetAndBall(coords, 16);
-  BruteForceTriangleSearch3D brute;
-  AabbTreeSearch3D tree;
-  brute.build(coords, surf);
-  tree.build(coords, surf);
+  BothSearches3D s(16);
+  auto& [coords, surf, brute, tree] = s;
   std::mt19937 rng(19);
   std::uniform_real_distribution<Real> u(-0.2, 2.2), w(0.0, 0.3);
   for (int i = 0; i < 300; ++i) {
