@@ -23,6 +23,9 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       every row's residual is <= T (the absolute force tolerance the run
       printed); with --summary, its first line says "completed" (or, with
       --stopped, "stopped: ...")
+  stiffness CSV --from U1 --to U2 --expected K [--tolerance 0.02]
+      the secant dP/du between U1 and U2 on the approach (up to the largest u,
+      P interpolated linearly between states) vs the expected value
   agree   A.csv B.csv --at U [U ...] [--tolerance REL] [--abs ABS]
       P of the last row at each u = U agrees between the two curves
   bodies  BODY_FORCES.csv [--mirror A B --axis x] [--mirror-tolerance REL] [--zero x y]
@@ -91,6 +94,23 @@ def value(c, a):
             return 0 if abs(ratio - 1.0) <= a.tolerance else 1
     print(f"no state at u = {a.u}")
     return 1
+
+
+def stiffness(c, a):
+    last = max(range(len(c["u"])), key=lambda k: c["u"][k])
+    u, P = c["u"][: last + 1], c["P"][: last + 1]
+
+    def at(x):
+        for i in range(len(u) - 1):
+            if min(u[i], u[i + 1]) <= x <= max(u[i], u[i + 1]) and u[i] != u[i + 1]:
+                return P[i] + (x - u[i]) / (u[i + 1] - u[i]) * (P[i + 1] - P[i])
+        sys.exit(f"u = {x} is not on the approach (u from {min(u)} to {max(u)})")
+
+    k = (at(a.to) - at(a.start)) / (a.to - a.start)
+    ratio = k / a.expected
+    print(f"dP/du on [{a.start:g}, {a.to:g}] = {k:.6g}; expected {a.expected:.6g}, ratio {ratio:.5f} "
+          f"(tolerance {a.tolerance})")
+    return 0 if abs(ratio - 1.0) <= a.tolerance else 1
 
 
 def balance(c, a):
@@ -250,6 +270,12 @@ def main():
     v.add_argument("--expected", type=float, required=True)
     v.add_argument("--tolerance", type=float, default=0.01)
     v.add_argument("--column", default="P")
+    st = sub.add_parser("stiffness")
+    st.add_argument("csv")
+    st.add_argument("--from", dest="start", type=float, required=True)
+    st.add_argument("--to", type=float, required=True)
+    st.add_argument("--expected", type=float, required=True)
+    st.add_argument("--tolerance", type=float, default=0.02)
     b = sub.add_parser("balance")
     b.add_argument("csv")
     b.add_argument("--tolerance", type=float, default=0.03)
@@ -297,7 +323,8 @@ def main():
     if a.cmd == "foldsmatch":
         return foldsmatch(a)
     c = read(a.csv)
-    return {"hertz": hertz, "pulloff": pulloff, "value": value, "balance": balance, "jumps": jumps, "folds": folds,
+    return {"hertz": hertz, "pulloff": pulloff, "value": value, "stiffness": stiffness, "balance": balance,
+            "jumps": jumps, "folds": folds,
             "converged": converged, "returns": returns}[a.cmd](c, a)
 
 

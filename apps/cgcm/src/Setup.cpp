@@ -181,9 +181,10 @@ RCP<const ParameterList> validParameters() {
             "0 is a sharp cutoff, whose residual jumps when points cross it",
             between(0.0, 0.9));
   inter.set("Projection Smoothing", interaction::SurfaceInteractionOptions::kDefaultProjectionSmoothing,
-            "width delta of the blend of a point's projections onto neighbouring segments, in units of r0: near "
-            "a concave corner of the other surface the closest segment switches and the force direction would "
-            "jump; the blend keeps the residual smooth. 0 uses the closest segment alone (the paper's Method 3; "
+            "width delta of the blend of a point's projections onto neighbouring segments (3D: triangles), in "
+            "units of r0: near a concave corner (3D: edge) of the other surface the closest facet switches and "
+            "the force direction would jump; the blend keeps the residual smooth. 0 uses the closest facet alone "
+            "(the paper's Method 3; "
             "Newton can then find no equilibrium next to such a switch)",
             atLeast(0.0));
   inter.set("Search Radius Factor", 2.0, "matrix-graph search radius / cutoff (> 1)", atLeast(1.01));

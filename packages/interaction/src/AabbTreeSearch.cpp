@@ -60,11 +60,15 @@ struct FacetTree {
   // arithmetic and tie rule. (Facets equally close at other points, an exact
   // tie between separate parts of the surface, are not searched for: CGAL's
   // choice stands.) False if none lies within the cutoff.
-  bool candidates(const Real* x, Real cutoff, std::vector<LocalIndex>& out) const {
+  // `hint`: a facet index and its closest point to x, within the cutoff, or -1.
+  bool candidates(const Real* x, Real cutoff, LocalIndex hint, const Real* hintPoint,
+                  std::vector<LocalIndex>& out) const {
     if (facets.empty()) return false;
     // Nothing within the cutoff: one box test instead of a distance query.
-    if (std::isfinite(cutoff) && !tree.do_intersect(box(x, x, cutoff))) return false;
-    const auto [closest, primitive] = tree.closest_point_and_primitive(point(x));
+    if (hint < 0 && std::isfinite(cutoff) && !tree.do_intersect(box(x, x, cutoff))) return false;
+    const auto [closest, primitive] =
+        hint < 0 ? tree.closest_point_and_primitive(point(x))
+                 : tree.closest_point_and_primitive(point(x), {point(hintPoint), facets.cbegin() + hint});
     const Real p[3] = {closest.x(), closest.y(), closest.z()};
     const Real d2 = CGAL::squared_distance(point(x), closest);
     if (d2 > cutoff * cutoff * (1.0 + 1e-12)) return false;
@@ -155,10 +159,19 @@ void AabbTreeSearch<Dim>::build(const Real* coords, const mesh::Surface& surface
 }
 
 template <int Dim>
-Projection AabbTreeSearch<Dim>::project(const Real* x, Real cutoff) const {
+Projection AabbTreeSearch<Dim>::project(const Real* x, Real cutoff, LocalIndex hint) const {
   std::vector<LocalIndex>& candidates = tree_->candidateScratch;
   candidates.clear();
-  if (!tree_->candidates(x, cutoff, candidates)) return {};
+  Real hintPoint[3] = {0.0, 0.0, 0.0};
+  if (hint >= 0 && hint < numFacets()) {
+    typename detail::Facets<Dim>::Best h;
+    h.consider(&vertices_[kStride * hint], hint, x, cutoff * cutoff);
+    if (h.facet < 0) hint = -1;  // beyond the cutoff: no bound to start from
+    for (int k = 0; k < Dim; ++k) hintPoint[k] = h.p[k];
+  } else {
+    hint = -1;
+  }
+  if (!tree_->candidates(x, cutoff, hint, hintPoint, candidates)) return {};
   typename detail::Facets<Dim>::Best best;
   for (LocalIndex e : candidates) best.consider(&vertices_[kStride * e], e, x, cutoff * cutoff);
   return best.result();

@@ -20,7 +20,7 @@ void BruteForceSearch<Dim>::build(const Real* coords, const mesh::Surface& surfa
 }
 
 template <int Dim>
-Projection BruteForceSearch<Dim>::project(const Real* x, Real cutoff) const {
+Projection BruteForceSearch<Dim>::project(const Real* x, Real cutoff, LocalIndex) const {
   typename Facets<Dim>::Best best;
   for (LocalIndex e = 0; e < numFacets(); ++e) best.consider(&vertices_[kStride * e], e, x, cutoff * cutoff);
   return best.result();
@@ -36,6 +36,16 @@ void BruteForceSearch<Dim>::facetsNear(const Real* lo, const Real* hi, Real radi
   }
   for (LocalIndex e = 0; e < numFacets(); ++e)
     if (Facets<Dim>::boxOverlaps(&vertices_[kStride * e], qlo, qhi)) out.push_back(e);
+}
+
+template <int Dim>
+void BruteForceSearch<Dim>::facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
+  const Real r = radius * (1.0 + 1e-12) + 1e-300;
+  for (LocalIndex e = 0; e < numFacets(); ++e) {
+    typename Facets<Dim>::Best one;
+    one.consider(&vertices_[kStride * e], e, x, r * r);
+    if (one.facet >= 0) out.push_back(e);
+  }
 }
 
 template class BruteForceSearch<2>;

@@ -64,6 +64,9 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   summary_.resultant.assign(surfaces_.size(), {0.0, 0.0, 0.0});
   search_.resize(surfaces_.size());
   for (auto& s : search_) s = makeClosestPointSearch(dim_, options_.search);
+  for (const mesh::Surface& sk : surfaces_) surfaceNodes_.insert(surfaceNodes_.end(), sk.facets.begin(), sk.facets.end());
+  std::sort(surfaceNodes_.begin(), surfaceNodes_.end());
+  surfaceNodes_.erase(std::unique(surfaceNodes_.begin(), surfaceNodes_.end()), surfaceNodes_.end());
   if (dim_ == 3) {
     for (const mesh::Surface& sk : surfaces_) {
       mesh::Surface t;
@@ -79,9 +82,16 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
       targets_.push_back(std::move(t));
       facetRules_.push_back(facetQuadrature(sk.nodesPerFacet == 4 ? 4 : 3, options_.quadraturePoints));
     }
-    return;  // the projection blend (and its neighbour table) is 2D only
+  } else {
+    targets_ = surfaces_;
   }
-  targets_ = surfaces_;
+  std::size_t points = 0;
+  for (std::size_t k = 0; k < surfaces_.size(); ++k) {
+    firstPoint_.push_back(points);
+    points += std::size_t(surfaces_[k].numFacets()) * pointsPerFacet(int(k));
+  }
+  hints_.assign(points * surfaces_.size(), -1);
+  if (dim_ == 3) return;  // the projection blend (and its neighbour table) is 2D only
 
   // neighbours_[l][2 s + end]: the other segment holding that node of s, if exactly one does
   neighbours_.resize(surfaces_.size());
@@ -221,6 +231,53 @@ void SurfaceInteraction::findTargets(const Real* coords, const Real x[2], int l,
   if (n > 1) ++summary_.numBlended;
 }
 
+// The 3D blend targets of x: every triangle of body l with rho <= rho_min +
+// c delta (rho = r + o^2/delta, Method3Kernel3D.hpp), lowest rho first, at
+// most kMaxBlendTargets3D. rho_min <= rho of the closest triangle and
+// r <= rho, so every candidate lies within that rho + c delta of x.
+void SurfaceInteraction::findTargets3D(const Real* coords, const Real x[3], int l, LocalIndex closest,
+                                       InteractionPair& p) {
+  const mesh::Surface& tl = targets_[l];
+  const Real delta = smoothing_, range = kSmoothingRange * delta;
+  auto rhoOf = [&](LocalIndex s) {
+    Real t[9], xi[2], foot[3];
+    for (int v = 0; v < 3; ++v)
+      for (int k = 0; k < 3; ++k) t[3 * v + k] = coords[3 * std::size_t(tl.facets[3 * std::size_t(s) + v]) + k];
+    int region;
+    const Real d2 = projectOntoTriangle(x, t, t + 3, t + 6, xi, foot, region);
+    Real o2 = 0.0;
+    if (region != 0) {
+      Real e1[3], e2[3], m[3], xa[3];
+      for (int k = 0; k < 3; ++k) e1[k] = t[3 + k] - t[k], e2[k] = t[6 + k] - t[k], xa[k] = x[k] - t[k];
+      detail::cross3(e1, e2, m);
+      const Real hm = detail::dot3(xa, m);
+      o2 = std::max(d2 - hm * hm / detail::dot3(m, m), 0.0);
+    }
+    return std::sqrt(d2) + o2 / delta;
+  };
+  const Real limit = rhoOf(closest) + range;
+  near_.clear();
+  search_[l]->facetsNearPoint(x, limit, near_);
+  candidates_.clear();
+  Real rhoMin = std::numeric_limits<Real>::infinity();
+  for (LocalIndex s : near_) {
+    const Real rho = rhoOf(s);
+    if (rho > limit) continue;
+    rhoMin = std::min(rhoMin, rho);
+    candidates_.emplace_back(rho, s);
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+  int n = 0;
+  while (n < int(candidates_.size()) && candidates_[n].first <= rhoMin + range) ++n;
+  if (n > kMaxBlendTargets3D) {
+    ++summary_.numTruncatedBlends;
+    n = kMaxBlendTargets3D;
+  }
+  p.numTargets = n;
+  for (int i = 0; i < n; ++i) p.targets[i] = candidates_[i].second;
+  if (n > 1) ++summary_.numBlended;
+}
+
 std::vector<char> SurfaceInteraction::bodiesWithin(const Real* coords, Real radius) const {
   const int nb = numBodies();
   std::vector<std::array<Real, 6>> box(nb);
@@ -248,8 +305,49 @@ std::vector<char> SurfaceInteraction::bodiesWithin(const Real* coords, Real radi
   return near;
 }
 
+template <class Visit>
+void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit) const {
+  for (int k = 0; k < numBodies(); ++k) {
+    const mesh::Surface& sk = surfaces_[k];
+    const int npf = sk.nodesPerFacet;
+    for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
+      const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+      if (dim_ == 3) {
+        const auto& rule = facetRules_[k];
+        for (int q = 0; q < int(rule.size()); ++q) {
+          Real x[3] = {0.0, 0.0, 0.0};
+          for (int a = 0; a < npf; ++a)
+            for (int i = 0; i < 3; ++i) x[i] += rule[q].N[a] * coords[3 * std::size_t(nodes[a]) + i];
+          visit(k, e, q, x);
+        }
+        continue;
+      }
+      const Real* xa = coords + 2 * std::size_t(nodes[0]);
+      const Real* xb = coords + 2 * std::size_t(nodes[1]);
+      for (int q = 0; q < rule_.size(); ++q) {
+        const Real xi = rule_.points[q];
+        const Real x[2] = {(1.0 - xi) * xa[0] + xi * xb[0], (1.0 - xi) * xa[1] + xi * xb[1]};
+        visit(k, e, q, x);
+      }
+    }
+  }
+}
+
 void SurfaceInteraction::updatePairs(const Real* coords) {
   const int nb = numBodies();
+  bool same = searchedCutoff_ == cutoff_ && searchedSmoothing_ == smoothing_ &&
+              searchedCoords_.size() == surfaceNodes_.size() * dim_;
+  for (std::size_t i = 0; same && i < surfaceNodes_.size(); ++i)
+    for (int k = 0; k < dim_; ++k)
+      same = same && searchedCoords_[dim_ * i + k] == coords[dim_ * std::size_t(surfaceNodes_[i]) + k];
+  if (same) return;  // the trees and pairs of this very state
+  searchedCoords_.resize(surfaceNodes_.size() * dim_);
+  for (std::size_t i = 0; i < surfaceNodes_.size(); ++i)
+    for (int k = 0; k < dim_; ++k) searchedCoords_[dim_ * i + k] = coords[dim_ * std::size_t(surfaceNodes_[i]) + k];
+  searchedCutoff_ = cutoff_;
+  searchedSmoothing_ = smoothing_;
+  ++summary_.numSearches;
+
   const std::vector<char> near = bodiesWithin(coords, cutoff_);
   for (int l = 0; l < nb; ++l) {
     bool needed = false;
@@ -268,41 +366,24 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
     for (int l = 0; l < nb; ++l) {
       if (!near[std::size_t(k) * nb + l]) continue;
       ++summary_.numQuadraturePoints;
-      const Projection pr = search_[l]->project(x, cutoff_);
+      const std::size_t point = firstPoint_[k] + std::size_t(e) * pointsPerFacet(k) + q;
+      LocalIndex& hint = hints_[point * nb + l];
+      const Projection pr = search_[l]->project(x, cutoff_, hint);
+      hint = pr.facet;
       if (!pr.found()) {
         ++summary_.numBeyondCutoff;
         continue;
       }
       InteractionPair p{k, e, q, l};
       p.targets[0] = pr.facet;
-      if (dim_ == 2 && smoothing_ > 0.0) findTargets(coords, x, l, pr.distance, p);
+      if (smoothing_ > 0.0) {
+        if (dim_ == 2) findTargets(coords, x, l, pr.distance, p);
+        else findTargets3D(coords, x, l, pr.facet, p);
+      }
       pairs_.push_back(p);
     }
   };
-  for (int k = 0; k < nb; ++k) {
-    const mesh::Surface& sk = surfaces_[k];
-    const int npf = sk.nodesPerFacet;
-    for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
-      const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
-      if (dim_ == 3) {
-        const auto& rule = facetRules_[k];
-        for (int q = 0; q < int(rule.size()); ++q) {
-          Real x[3] = {0.0, 0.0, 0.0};
-          for (int a = 0; a < npf; ++a)
-            for (int i = 0; i < 3; ++i) x[i] += rule[q].N[a] * coords[3 * std::size_t(nodes[a]) + i];
-          searchFrom(k, e, q, x);
-        }
-        continue;
-      }
-      const Real* xa = coords + 2 * std::size_t(nodes[0]);
-      const Real* xb = coords + 2 * std::size_t(nodes[1]);
-      for (int q = 0; q < rule_.size(); ++q) {
-        const Real xi = rule_.points[q];
-        const Real x[2] = {(1.0 - xi) * xa[0] + xi * xb[0], (1.0 - xi) * xa[1] + xi * xb[1]};
-        searchFrom(k, e, q, x);
-      }
-    }
-  }
+  forEachPoint(coords, searchFrom);
   summary_.numPairs = LocalIndex(pairs_.size());
 }
 
@@ -326,34 +407,80 @@ PairState SurfaceInteraction::evaluatePair3D(const Real* coords, const Interacti
                                              PairContribution& out, bool withTangent) const {
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& tl = targets_[p.otherBody];
-  const int npf = sk.nodesPerFacet;
+  const int npf = sk.nodesPerFacet, nt = p.numTargets;
+  const int nz = 3 * npf + 9;
   out.dim = 3;
   out.numRowNodes = npf;
-  out.numColNodes = npf + 3;
-  Real z[21];
+  int nc = npf;
   for (int a = 0; a < npf; ++a) out.rowNodes[a] = out.colNodes[a] = sk.facets[std::size_t(p.facet) * npf + a];
-  for (int a = 0; a < 3; ++a) out.colNodes[npf + a] = tl.facets[3 * std::size_t(p.targets[0]) + a];
-  for (int a = 0; a < npf + 3; ++a)
-    for (int i = 0; i < 3; ++i) z[3 * a + i] = coords[3 * std::size_t(out.colNodes[a]) + i];
+  // col[t][a]: column node of target t's vertex a (shared vertices merged)
+  int col[kMaxBlendTargets3D][3];
+  for (int t = 0; t < nt; ++t)
+    for (int a = 0; a < 3; ++a) {
+      const LocalIndex node = tl.facets[3 * std::size_t(p.targets[t]) + a];
+      int c = npf;
+      while (c < nc && out.colNodes[c] != node) ++c;
+      if (c == nc) out.colNodes[nc++] = node;
+      col[t][a] = c;
+    }
+  out.numColNodes = nc;
   const Law law = this->law(p.body, p.otherBody);
   const FacetPoint& q = facetRules_[p.body][p.qp];
-  Real K[12 * 21];
-  const int nz = 3 * npf + 9;
-  const PairState st = npf == 4 ? method3Pair3D<4>(z, q, law, out.f, withTangent ? K : nullptr)
-                                : method3Pair3D<3>(z, q, law, out.f, withTangent ? K : nullptr);
-  bool finite = true;
-  for (int i = 0; i < 3 * npf; ++i) finite = finite && std::isfinite(out.f[i]);
-  if (!(st.distance > 0.0) || !finite) {
-    std::ostringstream os;
-    os << "surface interaction: quadrature point " << p.qp << " of facet " << p.facet << " of body " << p.body
-       << " lies on triangle " << p.targets[0] << " of body " << p.otherBody << " (r = " << st.distance
-       << "): the surfaces touch or interpenetrate";
-    throw NumericalError(os.str());
+  // One target: its contribution. Several: the softmin blend over rho_t
+  // (header), K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta].
+  Real f[kMaxBlendTargets3D][12], rho[kMaxBlendTargets3D], Jrho[kMaxBlendTargets3D][21];
+  Real Kt[kMaxBlendTargets3D][12 * 21];  // [t][3 npf x nz]
+  PairState st[kMaxBlendTargets3D];
+  int closest = 0;
+  for (int t = 0; t < nt; ++t) {
+    Real z[21];
+    for (int a = 0; a < npf; ++a)
+      for (int i = 0; i < 3; ++i) z[3 * a + i] = coords[3 * std::size_t(out.colNodes[a]) + i];
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < 3; ++i) z[3 * npf + 3 * a + i] = coords[3 * std::size_t(out.colNodes[col[t][a]]) + i];
+    Real* K = withTangent ? Kt[t] : nullptr;
+    st[t] = npf == 4 ? method3Pair3D<4>(z, q, law, f[t], K) : method3Pair3D<3>(z, q, law, f[t], K);
+    bool finite = true;
+    for (int i = 0; i < 3 * npf; ++i) finite = finite && std::isfinite(f[t][i]);
+    if (!(st[t].distance > 0.0) || !finite) {
+      std::ostringstream os;
+      os << "surface interaction: quadrature point " << p.qp << " of facet " << p.facet << " of body " << p.body
+         << " lies on triangle " << p.targets[t] << " of body " << p.otherBody << " (r = " << st[t].distance
+         << "): the surfaces touch or interpenetrate";
+      throw NumericalError(os.str());
+    }
+    if (nt == 1) break;
+    Real* g = withTangent ? Jrho[t] : nullptr;
+    rho[t] = npf == 4 ? method3BlendDistance3D<4>(z, q, st[t].region, smoothing_, g)
+                      : method3BlendDistance3D<3>(z, q, st[t].region, smoothing_, g);
+    if (rho[t] < rho[closest]) closest = t;
   }
-  if (withTangent)
-    for (int i = 0; i < 3 * npf; ++i)
-      for (int j = 0; j < nz; ++j) out.K[i][j] = K[i * nz + j];
-  return st;
+  Real w[kMaxBlendTargets3D] = {1.0}, sum = 0.0;
+  if (nt > 1) {
+    for (int t = 0; t < nt; ++t) sum += (w[t] = std::exp(-(rho[t] - rho[closest]) / smoothing_));
+    for (int t = 0; t < nt; ++t) w[t] /= sum;
+  }
+  const int nf = 3 * npf;
+  for (int i = 0; i < nf; ++i) {
+    out.f[i] = 0.0;
+    for (int t = 0; t < nt; ++t) out.f[i] += w[t] * f[t][i];
+  }
+  if (!withTangent) return st[closest];
+  const int ncol = 3 * nc;
+  for (int i = 0; i < nf; ++i)
+    for (int c = 0; c < ncol; ++c) out.K[i][c] = 0.0;
+  for (int t = 0; t < nt; ++t) {
+    int colOf[21];  // column of the kernel's z entry j
+    for (int j = 0; j < nz; ++j) colOf[j] = j < nf ? j : 3 * col[t][(j - nf) / 3] + (j - nf) % 3;
+    const Real* K = Kt[t];
+    for (int i = 0; i < nf; ++i) {
+      for (int j = 0; j < nz; ++j) out.K[i][colOf[j]] += w[t] * K[i * nz + j];
+      if (nt == 1) continue;
+      const Real g = w[t] * (out.f[i] - f[t][i]) / smoothing_;
+      for (int j = 0; j < nz; ++j) out.K[i][colOf[j]] += g * Jrho[t][j];
+    }
+  }
+  return st[closest];
 }
 
 PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p,
@@ -490,46 +617,59 @@ void SurfaceInteraction::evaluate(const Real* coords, std::vector<PairContributi
 
 std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(const Real* coords,
                                                                              Real radius) const {
-  const int nb = numBodies(), d = dim_;
-  const std::vector<char> bodies = bodiesWithin(coords, radius);
+  const int nb = numBodies();
+  // A point at distance d from body l pairs, after every node moved by less
+  // than m, with a facet within d + 4 m of its present position; m < skin/2
+  // with skin = radius - cutoff, and a point farther than the radius stays
+  // beyond the cutoff. 2D blends reach (kSmoothingRange + 1) delta farther.
+  const Real blend = dim_ == 2 ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
+  const Real skin = std::max(radius - cutoff_, 0.0);
+  const std::vector<char> bodies = bodiesWithin(coords, radius + blend);
   std::vector<std::unique_ptr<ClosestPointSearch>> search(nb);
   for (int l = 0; l < nb; ++l) {
-    search[l] = makeClosestPointSearch(d, options_.search);
+    search[l] = makeClosestPointSearch(dim_, options_.search);
     search[l]->build(coords, targets_[l]);
   }
   std::vector<std::pair<LocalIndex, LocalIndex>> out;
   std::vector<LocalIndex> near;
-  for (int k = 0; k < nb; ++k) {
+  std::vector<char> coupled(std::size_t(nb) * nb, 0);
+  int lastBody = -1;
+  LocalIndex lastFacet = -1;
+  bool any = false;
+  auto facetDone = [&]() {  // the facet's own block, once it couples with anything
+    if (!any) return;
+    const mesh::Surface& sk = surfaces_[lastBody];
+    const int npf = sk.nodesPerFacet;
+    const LocalIndex* nodes = &sk.facets[std::size_t(lastFacet) * npf];
+    for (int a = 0; a < npf; ++a)
+      for (int b = 0; b < npf; ++b) out.emplace_back(nodes[a], nodes[b]);
+  };
+  forEachPoint(coords, [&](int k, LocalIndex e, int, const Real* x) {
+    if (k != lastBody || e != lastFacet) {
+      facetDone();
+      lastBody = k;
+      lastFacet = e;
+      any = false;
+    }
     const mesh::Surface& sk = surfaces_[k];
     const int npf = sk.nodesPerFacet;
-    for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
-      const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
-      Real lo[3], hi[3];
-      for (int i = 0; i < d; ++i) {
-        lo[i] = hi[i] = coords[d * std::size_t(nodes[0]) + i];
-        for (int a = 1; a < npf; ++a) {
-          lo[i] = std::min(lo[i], coords[d * std::size_t(nodes[a]) + i]);
-          hi[i] = std::max(hi[i], coords[d * std::size_t(nodes[a]) + i]);
-        }
-      }
-      bool any = false;
-      for (int l = 0; l < nb; ++l) {
-        if (!bodies[std::size_t(k) * nb + l]) continue;
-        near.clear();
-        search[l]->facetsNear(lo, hi, radius, near);
-        const mesh::Surface& tl = targets_[l];
-        for (LocalIndex s : near) {
-          any = true;
-          for (int a = 0; a < npf; ++a)
-            for (int j = 0; j < tl.nodesPerFacet; ++j)
-              out.emplace_back(nodes[a], tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
-        }
-      }
-      if (any)
+    const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+    for (int l = 0; l < nb; ++l) {
+      if (!bodies[std::size_t(k) * nb + l]) continue;
+      const Projection pr = search[l]->project(x, radius + blend);
+      if (!pr.found()) continue;
+      near.clear();
+      search[l]->facetsNearPoint(x, pr.distance + 2.0 * skin + blend, near);
+      const mesh::Surface& tl = targets_[l];
+      for (LocalIndex s : near) {
+        any = true;
         for (int a = 0; a < npf; ++a)
-          for (int b = 0; b < npf; ++b) out.emplace_back(nodes[a], nodes[b]);
+          for (int j = 0; j < tl.nodesPerFacet; ++j)
+            out.emplace_back(nodes[a], tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
+      }
     }
-  }
+  });
+  facetDone();
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

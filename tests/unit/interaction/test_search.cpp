@@ -443,6 +443,48 @@ TEST(ClosestPointSearch3D, MatchesBruteForceOnFacesEdgesAndVertices) {
   }
 }
 
+// A hint (any facet: the right one, a neighbour, a far one, one beyond the
+// cutoff, an invalid index) changes the work, never the answer.
+TEST(ClosestPointSearch3D, HintsDoNotChangeTheProjection) {
+  BothSearches3D s(24);
+  auto& [coords, surf, brute, tree] = s;
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<Real> ux(-0.3, 2.3), uz(-0.6, 1.8);
+  std::uniform_int_distribution<LocalIndex> anyFacet(0, tree.numFacets() - 1);
+  const Real inf = std::numeric_limits<Real>::infinity();
+  for (Real cutoff : {inf, 0.3, 0.05}) {
+    for (int i = 0; i < 4000; ++i) {
+      const Real x[3] = {ux(rng), ux(rng), uz(rng)};
+      const Projection pb = brute.project(x, cutoff);
+      const LocalIndex exact = brute.project(x, inf).facet;
+      for (LocalIndex hint : {exact, LocalIndex(exact ^ 1), anyFacet(rng), LocalIndex(-1), tree.numFacets()})
+        expectSameProjection3D(tree.project(x, cutoff, hint), pb, x);
+    }
+  }
+}
+
+TEST(ClosestPointSearch, HintsDoNotChangeTheProjection) {
+  std::vector<Real> coords;
+  const mesh::Surface surf = addPolyline(coords, wavyCurve(300), 1);
+  BruteForceSegmentSearch2D brute;
+  brute.build(coords, surf);
+  AabbTreeSearch2D tree;
+  tree.build(coords, surf);
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<Real> ux(-1.5, 5.5), uy(-1.5, 3.5);
+  std::uniform_int_distribution<LocalIndex> anyFacet(0, 299);
+  const Real inf = std::numeric_limits<Real>::infinity();
+  for (Real cutoff : {inf, 0.5}) {
+    for (int i = 0; i < 4000; ++i) {
+      const Real x[2] = {ux(rng), uy(rng)};
+      const Projection pb = brute.project(x, cutoff);
+      const LocalIndex exact = brute.project(x, inf).facet;
+      for (LocalIndex hint : {exact, LocalIndex(exact + 1), anyFacet(rng), LocalIndex(-1), LocalIndex(300)})
+        expectSameProjection(tree.project(x, cutoff, hint), pb, x);
+    }
+  }
+}
+
 TEST(ClosestPointSearch3D, FacetsNearCoverEveryFacetWithinTheRadius) {
   BothSearches3D s(16);
   auto& [coords, surf, brute, tree] = s;

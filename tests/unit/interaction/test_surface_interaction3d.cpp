@@ -121,13 +121,18 @@ TEST(SurfaceInteraction3D, TangentMatchesFiniteDifferences) {
     Real kmax = 0.0;
     for (const auto& kv : K) kmax = std::max(kmax, std::abs(kv.second));
     Real worst = 0.0;
-    const Real h = 1e-7;
+    // fourth-order central differences: the blend weights vary on the scale
+    // delta = 1e-3 r0, where the second-order stencil's truncation and
+    // round-off leave no step below 7e-7; this one's round-off is about
+    // 1e-13/h (measured: 1.3e-7 at h = 1e-6, 5.7e-8 at 3e-6, where a
+    // projection-region kink enters the tri3 case)
+    const Real h = 1e-6;
     for (std::size_t j = 0; j < sc.coords.size(); ++j) {
-      std::vector<Real> cp = sc.coords, cm = sc.coords;
-      cp[j] += h, cm[j] -= h;
-      const auto fp = residual(si, cp), fm = residual(si, cm);
-      for (std::size_t i = 0; i < fp.size(); ++i) {
-        const Real fd = (fp[i] - fm[i]) / (2 * h);
+      std::vector<Real> c1 = sc.coords, c2 = sc.coords, c3 = sc.coords, c4 = sc.coords;
+      c1[j] += 2 * h, c2[j] += h, c3[j] -= h, c4[j] -= 2 * h;
+      const auto f1 = residual(si, c1), f2 = residual(si, c2), f3 = residual(si, c3), f4 = residual(si, c4);
+      for (std::size_t i = 0; i < f1.size(); ++i) {
+        const Real fd = (-f1[i] + 8 * f2[i] - 8 * f3[i] + f4[i]) / (12 * h);
         const auto it = K.find({int(i), int(j)});
         const Real k = it == K.end() ? 0.0 : it->second;
         worst = std::max(worst, std::abs(k - fd) / kmax);
@@ -136,10 +141,103 @@ TEST(SurfaceInteraction3D, TangentMatchesFiniteDifferences) {
     std::printf("[si3d] flat %s: %zu pairs (face %d, vertex %d, edge %d), max|K - K_fd|/max|K| = %.2e\n",
                 flatTriangles ? "tri3" : "quad4", si.pairs().size(), regions[0], regions[1] + regions[2] + regions[3],
                 regions[4] + regions[5] + regions[6], worst);
-    EXPECT_LT(worst, 1e-6);
+    EXPECT_LT(worst, 3e-7);
     // the flat grid's outer points see the cap's rim from outside: edges and vertices
     EXPECT_GT(regions[0], 0);
     EXPECT_GT(regions[1] + regions[2] + regions[3] + regions[4] + regions[5] + regions[6], 0);
+  }
+}
+
+// A valley: two flat strips of triangles meeting at the concave edge x = 0
+// (z = slope |x|), and a small quad patch above it. A point above the edge
+// has its feet inside both strips; its closest triangle switches sides where
+// it crosses the bisector x = 0, and so does the direction of x - x_P.
+Scene patchOverValley(Real slope, Real x0) {
+  Scene sc;
+  const int n = 8;
+  const Real L = 1.0;
+  mesh::Surface v;
+  v.body = 0;
+  v.nodesPerFacet = 3;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const Real x = -L + 2 * L * i / n, y = -L + 2 * L * j / n;
+      sc.coords.insert(sc.coords.end(), {x, y, slope * std::abs(x)});
+    }
+  auto id = [&](int i, int j) { return LocalIndex(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const LocalIndex a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      v.facets.insert(v.facets.end(), {a, b, c, a, c, d});  // counter-clockwise from above: normal up
+    }
+  sc.surfaces.push_back(v);
+  const LocalIndex first = LocalIndex(sc.coords.size() / 3);
+  const Real h = 0.3, w = 0.1;  // the patch: 2 x 2 quads of width w at height h, centred at x0, normal down
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 2; ++i) sc.coords.insert(sc.coords.end(), {x0 + w * (i - 1), 0.03 + w * (j - 1), h});
+  mesh::Surface q;
+  q.body = 1;
+  q.nodesPerFacet = 4;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const LocalIndex a = first + LocalIndex(j * 3 + i);
+      q.facets.insert(q.facets.end(), {a, LocalIndex(a + 3), LocalIndex(a + 4), LocalIndex(a + 1)});
+    }
+  sc.surfaces.push_back(q);
+  return sc;
+}
+
+SurfaceInteraction valleyInteraction(const Scene& sc, Real smoothing) {
+  SurfaceInteractionOptions o;
+  o.formulation = Formulation::ThreeD;
+  o.quadraturePoints = 2;
+  o.cutoff = 2.5;
+  o.projectionSmoothing = smoothing;
+  return SurfaceInteraction(sc.surfaces, {1.0, 1.0}, makePotential("lennard-jones", 1.0, 0.5), o);
+}
+
+// Force on the patch as its centre crosses the valley's bisector: with the
+// closest triangle alone it jumps; blended over the triangles within a few
+// delta it does not, and its tangent matches finite differences.
+TEST(SurfaceInteraction3D, BlendIsContinuousAcrossAConcaveEdge) {
+  auto patchForce = [](Real smoothing, Real x0) {
+    Scene sc = patchOverValley(0.3, x0);
+    SurfaceInteraction si = valleyInteraction(sc, smoothing);
+    si.updatePairs(sc.coords);
+    std::vector<PairContribution> c;
+    si.evaluate(sc.coords, c, false);
+    return si.summary().resultant[1];
+  };
+  // the patch's Gauss points sit at x0 -+ w/2 -+ w/(2 sqrt 3): x0 = xc -+ e puts a row of them across x = 0
+  const Real e = 1e-9, xc = 0.05 - 0.05 / std::sqrt(3.0);
+  for (Real smoothing : {0.0, 5e-4}) {
+    const auto fa = patchForce(smoothing, xc - e), fb = patchForce(smoothing, xc + e);
+    const Real jump = std::abs(fa[0] - fb[0]) / std::abs(fa[2]);
+    std::printf("[valley] smoothing %.0e: jump of Fx across the bisector = %.2e |Fz|\n", smoothing, jump);
+    if (smoothing == 0.0) EXPECT_GT(jump, 1e-3);
+    else EXPECT_LT(jump, 1e-7);
+  }
+  // the tangent of the blend, with delta large enough that weights vary on the FD scale
+  for (Real x0 : {xc, xc + 0.01}) {
+    Scene sc = patchOverValley(0.3, x0);
+    SurfaceInteraction si = valleyInteraction(sc, 0.05);
+    si.updatePairs(sc.coords);
+    EXPECT_GT(si.summary().numBlended, 0);
+    const auto K = tangent(si, sc.coords);
+    Real kmax = 0.0, worst = 0.0;
+    for (const auto& kv : K) kmax = std::max(kmax, std::abs(kv.second));
+    const Real h = 1e-6;
+    for (std::size_t j = 0; j < sc.coords.size(); ++j) {
+      std::vector<Real> cp = sc.coords, cm = sc.coords;
+      cp[j] += h, cm[j] -= h;
+      const auto fp = residual(si, cp), fm = residual(si, cm);
+      for (std::size_t i = 0; i < fp.size(); ++i) {
+        const auto it = K.find({int(i), int(j)});
+        worst = std::max(worst, std::abs((it == K.end() ? 0.0 : it->second) - (fp[i] - fm[i]) / (2 * h)) / kmax);
+      }
+    }
+    std::printf("[valley] blended pairs %d, max|K - K_fd|/max|K| = %.2e\n", int(si.summary().numBlended), worst);
+    EXPECT_LT(worst, 1e-7);
   }
 }
 
@@ -156,6 +254,31 @@ TEST(SurfaceInteraction3D, CouplingsCoverEveryPair) {
       for (int b = 0; b < p.numColNodes; ++b)
         if (!std::binary_search(graph.begin(), graph.end(), std::make_pair(p.rowNodes[a], p.colNodes[b]))) ++missing;
   EXPECT_EQ(missing, 0);
+}
+
+// One search per state: a second call at the same coordinates reuses the
+// pairs; after a move the search (started from the previous projections)
+// finds what a fresh instance finds.
+TEST(SurfaceInteraction3D, SearchesOncePerState) {
+  Scene sc = capOverFlat(false);
+  SurfaceInteraction si = makeInteraction(sc);
+  si.updatePairs(sc.coords);
+  si.updatePairs(sc.coords);
+  EXPECT_EQ(si.summary().numSearches, 1);
+  std::vector<Real> moved = sc.coords;
+  for (std::size_t i = 0; i < moved.size(); ++i) moved[i] += 0.02 * std::sin(0.7 * i);
+  si.updatePairs(moved);
+  EXPECT_EQ(si.summary().numSearches, 2);
+  SurfaceInteraction fresh = makeInteraction(sc);
+  fresh.updatePairs(moved);
+  ASSERT_EQ(si.pairs().size(), fresh.pairs().size());
+  std::size_t sameTarget = 0;
+  for (std::size_t i = 0; i < si.pairs().size(); ++i) {
+    EXPECT_EQ(si.pairs()[i].facet, fresh.pairs()[i].facet);
+    EXPECT_EQ(si.pairs()[i].otherBody, fresh.pairs()[i].otherBody);
+    sameTarget += si.pairs()[i].target() == fresh.pairs()[i].target();
+  }
+  EXPECT_EQ(sameTarget, si.pairs().size());
 }
 
 TEST(SurfaceInteraction3D, TreeAndBruteForceAgree) {

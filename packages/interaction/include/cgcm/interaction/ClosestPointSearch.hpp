@@ -40,7 +40,11 @@ class ClosestPointSearch {
   virtual LocalIndex numFacets() const = 0;
   /// Closest point to x (dim() components) over all facets at distance
   /// <= cutoff (infinity: no cutoff). Ties go to the lowest facet index.
-  virtual Projection project(const Real* x, Real cutoff) const = 0;
+  /// `hint` (optional) is a facet likely to be close, typically the previous
+  /// projection's: it bounds the distance before the search starts. The
+  /// result does not depend on it.
+  virtual Projection project(const Real* x, Real cutoff, LocalIndex hint) const = 0;
+  Projection project(const Real* x, Real cutoff) const { return project(x, cutoff, -1); }
   /// Appends to `out` (sorted, unique) every facet whose bounding box
   /// overlaps the box [lo - radius, hi + radius]: a superset of the facets
   /// within `radius` of any point of the box [lo, hi].
@@ -140,8 +144,11 @@ class BruteForceSearch final : public ClosestPointSearch {
   using ClosestPointSearch::build;
   void build(const Real* coords, const mesh::Surface& surface) override;
   LocalIndex numFacets() const override { return LocalIndex(vertices_.size() / kStride); }
-  Projection project(const Real* x, Real cutoff) const override;
+  using ClosestPointSearch::project;
+  Projection project(const Real* x, Real cutoff, LocalIndex hint) const override;
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
+  /// Exactly the facets within `radius` of x (to round-off), as AabbTreeSearch.
+  void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:
   static constexpr std::size_t kStride = Dim == 2 ? 4 : 9;  ///< coordinates per facet
@@ -168,7 +175,10 @@ class AabbTreeSearch final : public ClosestPointSearch {
   using ClosestPointSearch::build;
   void build(const Real* coords, const mesh::Surface& surface) override;
   LocalIndex numFacets() const override { return LocalIndex(vertices_.size() / kStride); }
-  Projection project(const Real* x, Real cutoff) const override;
+  using ClosestPointSearch::project;
+  /// A hint within the cutoff replaces the box test and starts CGAL's
+  /// traversal at the hint's distance, pruning every farther node.
+  Projection project(const Real* x, Real cutoff, LocalIndex hint) const override;
   void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
   /// Exactly the facets within `radius` of x (to round-off): a traversal pruned by distance.
   void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;

@@ -132,7 +132,41 @@ inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const
   st.region = region;
 }
 
+/// The blend distance of a projection (SurfaceInteraction.hpp):
+/// rho = r + o^2/delta, o the distance from the foot on the triangle's plane
+/// to the projection (0 inside the face): o^2 = r^2 - h^2, h the height of x
+/// above the plane.
+template <int NF, class S>
+inline S blendDistance3D(const S* z, const FacetPoint& q, int region, Real delta) {
+  S x[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < NF; ++a)
+    for (int i = 0; i < 3; ++i) x[i] += q.N[a] * z[3 * a + i];
+  const S* y = z + 3 * NF;
+  S p[3], d[3], e1[3], e2[3], m[3], xa[3];
+  footInRegion(x, y, y + 3, y + 6, region, p);
+  for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i], e1[i] = y[3 + i] - y[i], e2[i] = y[6 + i] - y[i], xa[i] = x[i] - y[i];
+  cross3(e1, e2, m);
+  using std::sqrt;
+  const S r2 = dot3(d, d), hm = dot3(xa, m);
+  const S o2 = region == 0 ? S(0.0) : r2 - hm * hm / dot3(m, m);
+  return sqrt(r2) + o2 / delta;
+}
+
 }  // namespace detail
+
+/// rho = r + o^2/delta of a pair (detail::blendDistance3D) and, if grad is
+/// not null, d rho/dz (3 NF + 9 entries), for the projection region of x.
+template <int NF>
+Real method3BlendDistance3D(const Real* z, const FacetPoint& q, int region, Real delta, Real* grad) {
+  constexpr int nz = 3 * NF + 9;
+  if (grad == nullptr) return detail::blendDistance3D<NF>(z, q, region, delta);
+  using Fad = Sacado::Fad::SFad<Real, nz>;
+  Fad zf[nz];
+  for (int j = 0; j < nz; ++j) zf[j] = Fad(nz, j, z[j]);
+  const Fad rho = detail::blendDistance3D<NF>(zf, q, region, delta);
+  for (int j = 0; j < nz; ++j) grad[j] = rho.dx(j);
+  return rho.val();
+}
 
 /// Evaluates one pair: f (3 NF entries, node-major) and, if K is not null,
 /// K[i * (3 NF + 9) + j] = df_i/dz_j. `law(r, T, dT)` gives T(r) and dT/dr.

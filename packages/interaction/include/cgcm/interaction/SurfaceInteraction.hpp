@@ -12,8 +12,11 @@
 // cutoff are skipped without a search. In 3D the target s is a triangle of
 // l's surface with every quad4 facet split into two triangles
 // (targetSurface(l)); the projection is onto that triangle's face, edge or
-// vertex (Method3Kernel3D.hpp), and the projection smoothing below is a 2D
-// feature (3D uses the closest triangle alone).
+// vertex (Method3Kernel3D.hpp). The projection smoothing below applies in
+// 3D with rho_s = r_s + o_s^2/delta, o_s the distance from the foot on the
+// triangle's plane to the projection (no neighbour exception: triangles
+// projecting onto a common edge or vertex give equal contributions), over
+// at most kMaxBlendTargets3D triangles.
 // Usage per nonlinear-solver evaluation:
 //     si.updatePairs(coords);                  // search (once per evaluation)
 //     si.evaluate(coords, contributions);      // f and K of every pair
@@ -91,16 +94,20 @@ struct SurfaceInteractionOptions {
 /// rho <= rho_min + c delta, those with the lowest rho are kept (counted in
 /// InteractionSummary::numTruncatedBlends).
 constexpr int kMaxBlendTargets = 4;
+/// The same in 3D: the fan of triangles around a vertex of a flat surface
+/// (typically 6) all hold the foot of a point above the vertex.
+constexpr int kMaxBlendTargets3D = 8;
 /// c: candidates of the blend have rho_s <= rho_min + c delta. A segment
 /// entering the set has weight <= exp(-30) = 9.4e-14 of the largest one,
 /// below the rounding of the assembled residual, so the (discrete) set can
 /// change between evaluations without a visible jump; a larger c only adds
 /// candidates.
 constexpr Real kSmoothingRange = 30.0;
-/// Columns of one blended contribution: the point's segment nodes, two per
-/// target segment and the far node of a target's neighbour when the target
-/// projects onto their common vertex (shared nodes are merged).
-constexpr int kMaxContributionNodes = 2 + 3 * kMaxBlendTargets;
+/// Column nodes of one blended contribution: in 2D the point's segment
+/// nodes, two per target segment and the far node of a target's neighbour
+/// when the target projects onto their common vertex; in 3D the point's
+/// facet nodes and three per target triangle (shared nodes are merged).
+constexpr int kMaxContributionNodes = 4 + 3 * kMaxBlendTargets3D;
 
 /// One interaction pair: quadrature point `qp` of segment `facet` of body
 /// `body` and the segments `targets[0 .. numTargets)` of body `otherBody` it
@@ -113,14 +120,13 @@ struct InteractionPair {
   int qp = 0;
   int otherBody = 0;
   int numTargets = 1;
-  LocalIndex targets[kMaxBlendTargets] = {};
+  LocalIndex targets[kMaxBlendTargets3D] = {};
   /// The closest segment (the one of largest weight).
   LocalIndex target() const { return targets[0]; }
 };
 
-/// Columns of a contribution's tangent: 2D blends, or in 3D a quad4 facet
-/// and a target triangle (3 x 7 = 21).
-constexpr int kMaxContributionColumns = 2 * kMaxContributionNodes;
+/// Columns of a contribution's tangent (dim per column node).
+constexpr int kMaxContributionColumns = 3 * kMaxContributionNodes;
 
 /// Contribution of one pair, ready to scatter. Dof ordering is node-major,
 /// dim components per node: f[dim a + i] belongs to rowNodes[a], component i;
@@ -147,6 +153,7 @@ struct InteractionSummary {
   /// Part of the work of adhesion that the taper and cutoff remove,
   /// -integral of T (1 - S) dr from r_S0 to infinity, over w (0 without adhesion).
   Real neglectedWorkFraction = 0.0;
+  long numSearches = 0;  ///< updatePairs calls that searched (one at the last call's coordinates does not)
   LocalIndex numQuadraturePoints = 0;   ///< (point, other body) combinations searched
   LocalIndex numPairs = 0;              ///< within the cutoff (evaluated)
   LocalIndex numBeyondCutoff = 0;       ///< skipped by the cutoff
@@ -191,7 +198,10 @@ class SurfaceInteraction {
   Real projectionSmoothing() const { return smoothing_; }
 
   /// Rebuilds the search structures at `coords` (dim() entries per node,
-  /// global node ids) and the pair list. Call once per evaluation.
+  /// global node ids) and the pair list. Call once per evaluation: at the
+  /// surface coordinates (and cutoff) of the last call it returns at once
+  /// (a residual and a Jacobian at one state share one search); otherwise
+  /// each point's search starts from its previous projection.
   void updatePairs(const Real* coords);
   void updatePairs(const std::vector<Real>& coords) { updatePairs(coords.data()); }
   const std::vector<InteractionPair>& pairs() const { return pairs_; }
@@ -227,11 +237,13 @@ class SurfaceInteraction {
   }
 
   /// Sorted, unique (row node, column node) couplings of every pair that can
-  /// occur for quadrature points within `radius` of another body: for each
-  /// segment e and each segment s of another body whose bounding box comes
-  /// within `radius` of e's, the couplings of e's nodes with e's and s's
-  /// nodes. Use radius > cutoff + (kSmoothingRange + 1) projectionSmoothing()
-  /// (the farthest blend target) so that the graph survives small motions.
+  /// occur while the nodes move by less than (radius - cutoff)/2: for each
+  /// quadrature point x of facet e within `radius` of another body, at
+  /// distance d from it, the couplings of e's nodes with e's and with those
+  /// of every facet within d + 2 (radius - cutoff) of x (plus the reach of
+  /// the 2D projection blend). A facet couples only with what its points can
+  /// pair with, not with everything within the radius: a much sparser
+  /// Jacobian on fine 3D surfaces.
   std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Real* coords, Real radius) const;
   std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const std::vector<Real>& coords,
                                                            Real radius) const {
@@ -287,8 +299,13 @@ class SurfaceInteraction {
   void beginEvaluation();
   void accumulate(const InteractionPair& p, const PairState& st, const PairContribution& c);
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
+  void findTargets3D(const Real* coords, const Real x[3], int l, LocalIndex closest, InteractionPair& p);
   PairState evaluatePair3D(const Real* coords, const InteractionPair& p, PairContribution& out,
                            bool withTangent) const;
+  /// Calls visit(body, facet, quadrature point, x) for every quadrature point of every surface at `coords`.
+  template <class Visit>
+  void forEachPoint(const Real* coords, Visit&& visit) const;
+  std::size_t pointsPerFacet(int k) const { return dim_ == 3 ? facetRules_[k].size() : std::size_t(rule_.size()); }
   /// Pairs of bodies (k, l) whose surfaces come within `radius` (bounding boxes).
   std::vector<char> bodiesWithin(const Real* coords, Real radius) const;
   Real vertexPenalty(const Real* coords, int l, LocalIndex s, const Real x[2], int region, Real* grad,
@@ -309,6 +326,11 @@ class SurfaceInteraction {
   Real strength_ = 1.0;
   Real lengthScale_ = 1.0;
   std::vector<std::unique_ptr<ClosestPointSearch>> search_;
+  std::vector<LocalIndex> surfaceNodes_;  ///< every node of every surface, sorted
+  std::vector<Real> searchedCoords_;      ///< their coordinates at the last updatePairs
+  Real searchedCutoff_ = -1.0, searchedSmoothing_ = -1.0;
+  std::vector<std::size_t> firstPoint_;  ///< [body]: index of its first (facet, quadrature point)
+  std::vector<LocalIndex> hints_;        ///< [point * numBodies + other body]: last projection's facet, or -1
   std::vector<std::vector<LocalIndex>> neighbours_;  ///< [body][2 s + end]: segment sharing that node, or -1
   std::vector<InteractionPair> pairs_;
   std::vector<LocalIndex> near_;                        ///< scratch of findTargets
