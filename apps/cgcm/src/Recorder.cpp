@@ -12,7 +12,11 @@ namespace cgcm::app {
 using assembly::Vector;
 
 ContactProbe::ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
-    : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)) {}
+    : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)),
+      upperNodes_(m.surfaces[c.upperBody].facets) {
+  std::sort(upperNodes_.begin(), upperNodes_.end());
+  upperNodes_.erase(std::unique(upperNodes_.begin(), upperNodes_.end()), upperNodes_.end());
+}
 
 Real ContactProbe::gap(const Vector& u) const {
   const int y = mesh_.dim - 1;
@@ -29,12 +33,8 @@ Real ContactProbe::contactRadius(const Vector& u) const {
   const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + problem_.nodeValue(u, upper_, 0) : 0.0,
                         dim == 3 ? mesh_.coord(upper_, 1) + problem_.nodeValue(u, upper_, 1) : 0.0};
   std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of upper surface nodes
-  const auto& s = mesh_.surfaces[c_.upperBody];
-  std::vector<LocalIndex> nodes(s.facets);
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   const Real reach = 20.0 * c_.contactDistance;
-  for (LocalIndex n : nodes) {
+  for (LocalIndex n : upperNodes_) {
     const Real* p = &x[std::size_t(n) * dim];
     const auto proj = search->project(p, reach);
     const Real radius = dim == 3 ? std::hypot(p[0] - apex[0], p[1] - apex[1]) : p[0];

@@ -242,14 +242,15 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (root) std::cerr << "cgcm: stopped after step " << step << ": " << e.what() << "\n";
   }
   result.curve = recorder.curve;
+  result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   const auto graph = problem->graph();  // collective only when it has to be built
   result.matrixRows = graph->getGlobalNumRows();
   result.matrixEntries = graph->getGlobalNumEntries();
-  result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
   result.interactionSeconds = t.interaction - timingsBefore.interaction;
   result.searchSeconds = t.search - timingsBefore.search;
+  result.graphSeconds = t.graph - timingsBefore.graph;
 
   // Summary: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
   if (root) {

@@ -57,9 +57,10 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
   both(buf);
   std::snprintf(buf, sizeof buf,
                 "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s (closest-point search "
-                "%.3f s) + linear solves, NOX and LOCA %.3f s\n",
+                "%.3f s) + matrix graph couplings %.3f s + linear solves, NOX and LOCA %.3f s\n",
                 result.pathSeconds, result.assemblySeconds, result.interactionSeconds, result.searchSeconds,
-                result.pathSeconds - result.assemblySeconds - result.interactionSeconds);
+                result.graphSeconds,
+                result.pathSeconds - result.assemblySeconds - result.interactionSeconds - result.graphSeconds);
   both(buf);
 }
 

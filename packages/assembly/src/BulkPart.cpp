@@ -71,7 +71,7 @@ int assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordVie
 
 BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formulation formulation,
                    const material::NeoHookean& material)
-    : overlap_(dofs.overlapMap().get()), body_(body), formulation_(formulation), dim_(formulationDim(formulation)),
+    : overlap_(dofs.overlapMap().get()), formulation_(formulation), dim_(formulationDim(formulation)),
       material_(material) {
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     const auto& blk = mesh.blocks[b];

@@ -38,7 +38,6 @@ InteractionPart::InteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Me
   surfaceImport_ = Teuchos::rcp(new Import(dofs_->ownedMap(), surfaceMap_));
   uSurface_ = Teuchos::rcp(new Vector(surfaceMap_));
   coords_ = mesh.coords;
-  bodyForces_.assign(3 * std::size_t(interaction_->numBodies()), 0.0);
 }
 
 const std::vector<Real>& InteractionPart::surfaceCoordinates(const Vector& u) {
@@ -52,7 +51,7 @@ const std::vector<Real>& InteractionPart::surfaceCoordinates(const Vector& u) {
   return coords_;
 }
 
-int InteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) {
+int InteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& failure) {
   const std::vector<Real>& x = surfaceCoordinates(u);
   const auto t0 = std::chrono::steady_clock::now();
   interaction_->updatePairs(x.data());
@@ -64,25 +63,27 @@ int InteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) 
     lclJ = J->getLocalMatrixDevice();
     colMap = J->getColMap();
   }
-  bodyForces_.assign(3 * std::size_t(interaction_->numBodies()), 0.0);
   int dropped = 0;
-  interaction::PairContribution c;
-  for (const auto& p : interaction_->pairs()) {
-    if (!ownsFacet_[p.body][p.facet]) continue;  // each pair is evaluated by exactly one rank
-    interaction_->evaluatePair(x.data(), p, c, J != nullptr);
+  auto scatter = [&](const interaction::PairContribution& c) {
     LocalIndex rows[12], cols[interaction::kMaxContributionColumns];
     const int nrows = dim_ * c.numRowNodes;
     for (int a = 0; a < c.numRowNodes; ++a)
       for (int i = 0; i < dim_; ++i) rows[dim_ * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));
     for (int r = 0; r < nrows; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
-    for (int r = 0; r < nrows; ++r) bodyForces_[3 * std::size_t(p.body) + r % dim_] -= c.f[r];  // on the body: -f_C
-    if (!J) continue;
+    if (!J) return;
     // the point's facet and every facet its projection is blended over
     const int ncols = dim_ * c.numColNodes;
     for (int b = 0; b < c.numColNodes; ++b)
       for (int j = 0; j < dim_; ++j) cols[dim_ * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
     // sumIntoValues skips columns missing from the row and returns how many it found
     for (int r = 0; r < nrows; ++r) dropped += ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
+  };
+  // each pair is evaluated by exactly one rank
+  auto owned = [&](const interaction::InteractionPair& p) { return bool(ownsFacet_[p.body][p.facet]); };
+  try {
+    interaction_->evaluate(x.data(), scatter, J != nullptr, owned);
+  } catch (const NumericalError& e) {
+    failure = e.what();
   }
   return dropped;
 }
@@ -98,10 +99,14 @@ std::vector<std::pair<LocalIndex, LocalIndex>> InteractionPart::couplings(const 
 }
 
 std::vector<std::array<Real, 3>> InteractionPart::forces() const {
-  std::vector<Real> global(bodyForces_.size(), 0.0);
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, int(bodyForces_.size()), bodyForces_.data(), global.data());
-  std::vector<std::array<Real, 3>> out(interaction_->numBodies());
-  for (std::size_t b = 0; b < out.size(); ++b) out[b] = {global[3 * b], global[3 * b + 1], global[3 * b + 2]};
+  const auto& mine = interaction_->summary().resultant;  // this rank's pairs
+  const int nb = interaction_->numBodies();
+  std::vector<Real> local(3 * std::size_t(nb)), global(local.size(), 0.0);
+  for (int b = 0; b < nb; ++b)
+    for (int i = 0; i < 3; ++i) local[3 * std::size_t(b) + i] = mine[b][i];
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(), global.data());
+  std::vector<std::array<Real, 3>> out(nb);
+  for (int b = 0; b < nb; ++b) out[b] = {global[3 * b], global[3 * b + 1], global[3 * b + 2]};
   return out;
 }
 

@@ -35,13 +35,6 @@ Problem::Problem(Teuchos::RCP<const DofMap> dofs, std::shared_ptr<const mesh::Me
   exporter_ = Teuchos::rcp(new Export(dofs_->overlapMap(), dofs_->ownedMap()));
 }
 
-void Problem::setExtraCouplings(std::vector<std::pair<LocalIndex, LocalIndex>> nodePairs) {
-  std::sort(nodePairs.begin(), nodePairs.end());
-  nodePairs.erase(std::unique(nodePairs.begin(), nodePairs.end()), nodePairs.end());
-  if (nodePairs == extraCouplings_ && !graph_.is_null()) return;
-  extraCouplings_ = std::move(nodePairs);
-  graph_ = Teuchos::null;
-}
 
 Teuchos::RCP<const Graph> Problem::graph() {
   if (graph_.is_null()) buildGraph();
@@ -105,25 +98,30 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
   }
   double interactionSeconds = 0.0;
   int dropped = 0;
+  std::string interactionFailure;
   if (interactionPart_) {
     const auto ti = Clock::now();
-    dropped = interactionPart_->assemble(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J);
+    dropped = interactionPart_->assemble(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J,
+                                         interactionFailure);
     interactionSeconds = secondsSince(ti);
     timings_.search += interactionPart_->lastSearchSeconds();
   }
-  int counts[2] = {failures, dropped}, globalCounts[2] = {0, 0};
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, 2, counts, globalCounts);
+  // every rank learns of every failure here, before the collective end of assembly
+  int counts[3] = {failures, dropped, interactionFailure.empty() ? 0 : 1}, globalCounts[3] = {0, 0, 0};
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, 3, counts, globalCounts);
   if (J) Tpetra::endAssembly(*J);
   f.putScalar(0.0);
   f.doExport(*fOverlap_, *exporter_, Tpetra::ADD);
   timings_.interaction += interactionSeconds;
   if (J) {
     timings_.jacobian += secondsSince(t0) - interactionSeconds;
-    ++timings_.jacobianCalls;
   } else {
     timings_.residual += secondsSince(t0) - interactionSeconds;
-    ++timings_.residualCalls;
   }
+  if (globalCounts[2] > 0)
+    throw NumericalError(interactionFailure.empty()
+                             ? "surface interaction: the surfaces touch or interpenetrate (found on another rank)"
+                             : interactionFailure);
   if (globalCounts[0] > 0)
     throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0)");
   if (globalCounts[1] > 0) {
@@ -141,9 +139,14 @@ std::vector<std::array<Real, 3>> Problem::interactionForces() const {
   return interactionPart_ ? interactionPart_->forces() : std::vector<std::array<Real, 3>>{};
 }
 
-bool Problem::interactionGraphCovers(const Vector& u, Real radius) {
-  if (!interactionPart_) return true;
-  const auto wanted = interactionPart_->couplings(u, radius);
+std::vector<std::pair<LocalIndex, LocalIndex>> Problem::interactionCouplings(const Vector& u, Real radius) {
+  const auto t0 = Clock::now();
+  auto wanted = interactionPart_->couplings(u, radius);
+  timings_.graph += secondsSince(t0);
+  return wanted;
+}
+
+bool Problem::graphHoldsEverywhere(const std::vector<std::pair<LocalIndex, LocalIndex>>& wanted) const {
   const int missing = graph_.is_null() || !std::includes(extraCouplings_.begin(), extraCouplings_.end(),
                                                          wanted.begin(), wanted.end());
   int anyMissing = 0;
@@ -151,17 +154,20 @@ bool Problem::interactionGraphCovers(const Vector& u, Real radius) {
   return anyMissing == 0;
 }
 
+bool Problem::interactionGraphCovers(const Vector& u, Real radius) {
+  return !interactionPart_ || graphHoldsEverywhere(interactionCouplings(u, radius));
+}
+
 bool Problem::updateInteractionGraph(const Vector& u, bool keepExisting, Real radiusFactor) {
   if (!interactionPart_) return false;
-  auto wanted = interactionPart_->couplings(u, searchRadius() * radiusFactor);
-  const int missing =
-      std::includes(extraCouplings_.begin(), extraCouplings_.end(), wanted.begin(), wanted.end()) ? 0 : 1;
-  int anyMissing = 0;
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, missing, Teuchos::outArg(anyMissing));
-  if (!anyMissing && !graph_.is_null()) return false;
+  auto wanted = interactionCouplings(u, searchRadius() * radiusFactor);
+  if (graphHoldsEverywhere(wanted)) return false;
+  // every rank rebuilds (the fill is collective), also one whose couplings did not change
   if (keepExisting) wanted.insert(wanted.end(), extraCouplings_.begin(), extraCouplings_.end());
-  setExtraCouplings(std::move(wanted));
-  graph_ = Teuchos::null;  // every rank rebuilds (the fill is collective), also one whose couplings did not change
+  std::sort(wanted.begin(), wanted.end());
+  wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+  extraCouplings_ = std::move(wanted);
+  graph_ = Teuchos::null;
   graph();
   return true;
 }

@@ -112,14 +112,6 @@ struct FacetTree {
       return d2 <= r2;
     }
   };
-
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const {
-    if (facets.empty()) return;
-    const std::size_t first = out.size();
-    intersecting(lo, hi, radius, out);
-    std::sort(out.begin() + first, out.end());
-    out.erase(std::unique(out.begin() + first, out.end()), out.end());
-  }
 };
 
 // The CGAL tree and datum of a facet, per dimension.
@@ -175,12 +167,6 @@ Projection AabbTreeSearch<Dim>::project(const Real* x, Real cutoff, LocalIndex h
   typename detail::Facets<Dim>::Best best;
   for (LocalIndex e : candidates) best.consider(&vertices_[kStride * e], e, x, cutoff * cutoff);
   return best.result();
-}
-
-template <int Dim>
-void AabbTreeSearch<Dim>::facetsNear(const Real* lo, const Real* hi, Real radius,
-                                     std::vector<LocalIndex>& out) const {
-  tree_->facetsNear(lo, hi, radius, out);
 }
 
 template <int Dim>

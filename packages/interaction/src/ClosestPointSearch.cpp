@@ -27,18 +27,6 @@ Projection BruteForceSearch<Dim>::project(const Real* x, Real cutoff, LocalIndex
 }
 
 template <int Dim>
-void BruteForceSearch<Dim>::facetsNear(const Real* lo, const Real* hi, Real radius,
-                                       std::vector<LocalIndex>& out) const {
-  Real qlo[3], qhi[3];
-  for (int k = 0; k < Dim; ++k) {
-    qlo[k] = lo[k] - radius;
-    qhi[k] = hi[k] + radius;
-  }
-  for (LocalIndex e = 0; e < numFacets(); ++e)
-    if (Facets<Dim>::boxOverlaps(&vertices_[kStride * e], qlo, qhi)) out.push_back(e);
-}
-
-template <int Dim>
 void BruteForceSearch<Dim>::facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
   const Real r = radius * (1.0 + 1e-12) + 1e-300;
   for (LocalIndex e = 0; e < numFacets(); ++e) {

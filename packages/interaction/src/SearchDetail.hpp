@@ -62,17 +62,6 @@ struct Best {
   }
 };
 
-inline void segmentBox(const Real* s, Real lo[2], Real hi[2]) {
-  lo[0] = std::min(s[0], s[2]);
-  hi[0] = std::max(s[0], s[2]);
-  lo[1] = std::min(s[1], s[3]);
-  hi[1] = std::max(s[1], s[3]);
-}
-
-inline bool boxesOverlap(const Real alo[2], const Real ahi[2], const Real blo[2], const Real bhi[2]) {
-  return alo[0] <= bhi[0] && blo[0] <= ahi[0] && alo[1] <= bhi[1] && blo[1] <= ahi[1];
-}
-
 inline void copyTriangles(const Real* coords, const mesh::Surface& surface, std::vector<Real>& tri) {
   if (surface.nodesPerFacet != 3)
     throw InputError("3D closest-point search: surface facets must be triangles (3 nodes), got " +
@@ -118,33 +107,19 @@ struct BestTriangle {
   }
 };
 
-inline bool triangleBoxOverlaps(const Real* t, const Real lo[3], const Real hi[3]) {
-  for (int k = 0; k < 3; ++k) {
-    const Real tlo = std::min({t[k], t[3 + k], t[6 + k]}), thi = std::max({t[k], t[3 + k], t[6 + k]});
-    if (thi < lo[k] || hi[k] < tlo) return false;
-  }
-  return true;
-}
-
 // What differs between the dimensions of the searches: how the facets'
-// coordinates are copied, the projection that decides, the bounding-box test.
+// coordinates are copied and the projection that decides.
 template <int Dim>
 struct Facets;
 template <>
 struct Facets<2> {
   using Best = detail::Best;
   static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { copySegments(coords, s, v); }
-  static bool boxOverlaps(const Real* v, const Real lo[3], const Real hi[3]) {
-    Real blo[2], bhi[2];
-    segmentBox(v, blo, bhi);
-    return boxesOverlap(lo, hi, blo, bhi);
-  }
 };
 template <>
 struct Facets<3> {
   using Best = BestTriangle;
   static void copy(const Real* coords, const mesh::Surface& s, std::vector<Real>& v) { copyTriangles(coords, s, v); }
-  static bool boxOverlaps(const Real* v, const Real lo[3], const Real hi[3]) { return triangleBoxOverlaps(v, lo, hi); }
 };
 
 }  // namespace cgcm::interaction::detail

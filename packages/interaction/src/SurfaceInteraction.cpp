@@ -218,13 +218,19 @@ void SurfaceInteraction::findTargets(const Real* coords, const Real x[2], int l,
     rhoMin = std::min(rhoMin, rho);
     candidates_.emplace_back(rho, s);
   }
+  keepBlendTargets(rhoMin + range, kMaxBlendTargets, p);
+}
+
+// The candidates with rho <= limit, lowest first, at most maxTargets (a
+// truncation is counted); the closest projection is always among them.
+void SurfaceInteraction::keepBlendTargets(Real limit, int maxTargets, InteractionPair& p) {
   std::sort(candidates_.begin(), candidates_.end());
   int n = 0;
-  while (n < int(candidates_.size()) && candidates_[n].first <= rhoMin + range) ++n;
-  if (n == 0) return;  // cannot happen: the closest segment is within the limit
-  if (n > kMaxBlendTargets) {
+  while (n < int(candidates_.size()) && candidates_[n].first <= limit) ++n;
+  if (n == 0) return;  // cannot happen: the closest facet is a candidate
+  if (n > maxTargets) {
     ++summary_.numTruncatedBlends;
-    n = kMaxBlendTargets;
+    n = maxTargets;
   }
   p.numTargets = n;
   for (int i = 0; i < n; ++i) p.targets[i] = candidates_[i].second;
@@ -244,16 +250,8 @@ void SurfaceInteraction::findTargets3D(const Real* coords, const Real x[3], int 
     for (int v = 0; v < 3; ++v)
       for (int k = 0; k < 3; ++k) t[3 * v + k] = coords[3 * std::size_t(tl.facets[3 * std::size_t(s) + v]) + k];
     int region;
-    const Real d2 = projectOntoTriangle(x, t, t + 3, t + 6, xi, foot, region);
-    Real o2 = 0.0;
-    if (region != 0) {
-      Real e1[3], e2[3], m[3], xa[3];
-      for (int k = 0; k < 3; ++k) e1[k] = t[3 + k] - t[k], e2[k] = t[6 + k] - t[k], xa[k] = x[k] - t[k];
-      detail::cross3(e1, e2, m);
-      const Real hm = detail::dot3(xa, m);
-      o2 = std::max(d2 - hm * hm / detail::dot3(m, m), 0.0);
-    }
-    return std::sqrt(d2) + o2 / delta;
+    projectOntoTriangle(x, t, t + 3, t + 6, xi, foot, region);
+    return detail::blendDistanceAt(x, t, region, delta);
   };
   const Real limit = rhoOf(closest) + range;
   near_.clear();
@@ -266,16 +264,7 @@ void SurfaceInteraction::findTargets3D(const Real* coords, const Real x[3], int 
     rhoMin = std::min(rhoMin, rho);
     candidates_.emplace_back(rho, s);
   }
-  std::sort(candidates_.begin(), candidates_.end());
-  int n = 0;
-  while (n < int(candidates_.size()) && candidates_[n].first <= rhoMin + range) ++n;
-  if (n > kMaxBlendTargets3D) {
-    ++summary_.numTruncatedBlends;
-    n = kMaxBlendTargets3D;
-  }
-  p.numTargets = n;
-  for (int i = 0; i < n; ++i) p.targets[i] = candidates_[i].second;
-  if (n > 1) ++summary_.numBlended;
+  keepBlendTargets(rhoMin + range, kMaxBlendTargets3D, p);
 }
 
 std::vector<char> SurfaceInteraction::bodiesWithin(const Real* coords, Real radius) const {
@@ -305,8 +294,8 @@ std::vector<char> SurfaceInteraction::bodiesWithin(const Real* coords, Real radi
   return near;
 }
 
-template <class Visit>
-void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit) const {
+template <class Visit, class FacetDone>
+void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit, FacetDone&& facetDone) const {
   for (int k = 0; k < numBodies(); ++k) {
     const mesh::Surface& sk = surfaces_[k];
     const int npf = sk.nodesPerFacet;
@@ -320,6 +309,7 @@ void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit) const {
             for (int i = 0; i < 3; ++i) x[i] += rule[q].N[a] * coords[3 * std::size_t(nodes[a]) + i];
           visit(k, e, q, x);
         }
+        facetDone(k, e);
         continue;
       }
       const Real* xa = coords + 2 * std::size_t(nodes[0]);
@@ -329,6 +319,7 @@ void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit) const {
         const Real x[2] = {(1.0 - xi) * xa[0] + xi * xb[0], (1.0 - xi) * xa[1] + xi * xb[1]};
         visit(k, e, q, x);
       }
+      facetDone(k, e);
     }
   }
 }
@@ -383,7 +374,7 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
       pairs_.push_back(p);
     }
   };
-  forEachPoint(coords, searchFrom);
+  forEachPoint(coords, searchFrom, [](int, LocalIndex) {});
   summary_.numPairs = LocalIndex(pairs_.size());
 }
 
@@ -631,29 +622,8 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
     search[l]->build(coords, targets_[l]);
   }
   std::vector<std::pair<LocalIndex, LocalIndex>> out;
-  std::vector<LocalIndex> near;
-  std::vector<char> coupled(std::size_t(nb) * nb, 0);
-  int lastBody = -1;
-  LocalIndex lastFacet = -1;
-  bool any = false;
-  auto facetDone = [&]() {  // the facet's own block, once it couples with anything
-    if (!any) return;
-    const mesh::Surface& sk = surfaces_[lastBody];
-    const int npf = sk.nodesPerFacet;
-    const LocalIndex* nodes = &sk.facets[std::size_t(lastFacet) * npf];
-    for (int a = 0; a < npf; ++a)
-      for (int b = 0; b < npf; ++b) out.emplace_back(nodes[a], nodes[b]);
-  };
-  forEachPoint(coords, [&](int k, LocalIndex e, int, const Real* x) {
-    if (k != lastBody || e != lastFacet) {
-      facetDone();
-      lastBody = k;
-      lastFacet = e;
-      any = false;
-    }
-    const mesh::Surface& sk = surfaces_[k];
-    const int npf = sk.nodesPerFacet;
-    const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+  std::vector<LocalIndex> near, reach;  // reach: the target nodes the current facet's points can pair with
+  auto visit = [&](int k, LocalIndex, int, const Real* x) {
     for (int l = 0; l < nb; ++l) {
       if (!bodies[std::size_t(k) * nb + l]) continue;
       const Projection pr = search[l]->project(x, radius + blend);
@@ -661,15 +631,24 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
       near.clear();
       search[l]->facetsNearPoint(x, pr.distance + 2.0 * skin + blend, near);
       const mesh::Surface& tl = targets_[l];
-      for (LocalIndex s : near) {
-        any = true;
-        for (int a = 0; a < npf; ++a)
-          for (int j = 0; j < tl.nodesPerFacet; ++j)
-            out.emplace_back(nodes[a], tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
-      }
+      for (LocalIndex s : near)
+        for (int j = 0; j < tl.nodesPerFacet; ++j) reach.push_back(tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
     }
-  });
-  facetDone();
+  };
+  // once per facet: its nodes with its own and with every node it can reach (each pair once)
+  auto facetDone = [&](int k, LocalIndex e) {
+    if (reach.empty()) return;
+    const mesh::Surface& sk = surfaces_[k];
+    const int npf = sk.nodesPerFacet;
+    const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+    reach.insert(reach.end(), nodes, nodes + npf);
+    std::sort(reach.begin(), reach.end());
+    reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
+    for (int a = 0; a < npf; ++a)
+      for (LocalIndex n : reach) out.emplace_back(nodes[a], n);
+    reach.clear();
+  };
+  forEachPoint(coords, visit, facetDone);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

@@ -31,12 +31,6 @@ long parseInteger(const std::string& path, const std::string& text) {
   return v;
 }
 
-double parseFinite(const std::string& path, const std::string& text) {
-  const double v = parseDouble(path, text);
-  if (!std::isfinite(v)) throw InputError(path + ": \"" + trim(text) + "\" is not a finite number");
-  return v;
-}
-
 // Teuchos reads type="double" value="abc" as 0 without a word: every number of
 // the XML file is parsed again here, strictly, with its parameter's path.
 void checkXmlNumbers(const Teuchos::XMLObject& node, const std::string& prefix) {
@@ -50,7 +44,7 @@ void checkXmlNumbers(const Teuchos::XMLObject& node, const std::string& prefix) 
     }
     if (child.getTag() != "Parameter" || !child.hasAttribute("type") || !child.hasAttribute("value")) continue;
     const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
-    if (type == "double") parseFinite(path, value);
+    if (type == "double") parseDouble(path, value);
     if (type == "int") parseInteger(path, value);
     if (type == "Array(double)" || type == "Array(int)") {
       const auto open = value.find('{'), close = value.rfind('}');
@@ -58,7 +52,7 @@ void checkXmlNumbers(const Teuchos::XMLObject& node, const std::string& prefix) 
         throw InputError(path + ": \"" + value + "\" is not an array; write {a, b, c}");
       std::stringstream items(value.substr(open + 1, close - open - 1));
       for (std::string item; std::getline(items, item, ',');)
-        if (!trim(item).empty()) type == "Array(double)" ? void(parseFinite(path, item)) : void(parseInteger(path, item));
+        if (!trim(item).empty()) type == "Array(double)" ? void(parseDouble(path, item)) : void(parseInteger(path, item));
     }
   }
 }
@@ -116,11 +110,6 @@ void normaliseNumbers(Teuchos::ParameterList& deck, const Teuchos::ParameterList
     if (v.isType<double>() && e.isType<std::string>()) e.setValue(parseDouble(path, e.getValue<std::string>(nullptr)));
     if (v.isType<double>() && e.isType<int>()) e.setValue(double(e.getValue<int>(nullptr)));
     if (v.isType<int>() && e.isType<std::string>()) e.setValue(int(parseInteger(path, e.getValue<std::string>(nullptr))));
-    if (e.isType<double>() && !std::isfinite(e.getValue<double>(nullptr)))
-      throw InputError(path + ": " + std::to_string(e.getValue<double>(nullptr)) + " is not a finite number");
-    if (e.isType<Teuchos::Array<double>>())
-      for (double x : e.getValue<Teuchos::Array<double>>(nullptr))
-        if (!std::isfinite(x)) throw InputError(path + ": an entry is " + std::to_string(x) + ", not a finite number");
     checkRange(e, v, path);
   }
 }
@@ -145,6 +134,7 @@ double parseDouble(const std::string& path, const std::string& text) {
   }
   if (used == 0 || trim(text.substr(used)) != "")
     throw InputError(path + ": \"" + text + "\" is not a number");
+  if (!std::isfinite(v)) throw InputError(path + ": \"" + trim(text) + "\" is not a finite number");
   return v;
 }
 
@@ -216,9 +206,7 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
     if (entry.isType<double>()) {
       d->set(name, parseDouble(path, text));
     } else if (entry.isType<int>()) {
-      const double x = parseDouble(path, text);
-      if (x != double(int(x))) throw InputError(path + ": \"" + text + "\" is not an integer");
-      d->set(name, int(x));
+      d->set(name, int(parseInteger(path, text)));
     } else if (entry.isType<bool>()) {
       if (text == "true" || text == "1") d->set(name, true);
       else if (text == "false" || text == "0") d->set(name, false);

@@ -146,6 +146,7 @@ TEST(InteractionPart, CoupledTangentAndForcesOnTheBodies) {
   auto& [m, dofs, mat, bulk, full, si, u] = t;
   Vector uv(dofs->ownedMap());
   fromStd(u, uv);
+  EXPECT_FALSE(full.interactionGraphCovers(uv, full.searchRadius()));  // no graph yet
   EXPECT_TRUE(full.updateInteractionGraph(uv));
   EXPECT_TRUE(full.interactionGraphCovers(uv, full.searchRadius()));
   const auto fb = residual(bulk, u), ff = residual(full, u);

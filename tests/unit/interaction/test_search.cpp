@@ -171,38 +171,6 @@ TEST(ClosestPointSearch, CutoffPrunesOnlyFartherPoints) {
   }
 }
 
-TEST(ClosestPointSearch, FacetsNearIsWithinTheBoxOverlapsAndCoversTrueNeighbours) {
-  std::vector<Real> coords;
-  const mesh::Surface surf = addPolyline(coords, wavyCurve(200), 0);
-  for (auto& search : accelerated()) {
-    ClosestPointSearch& grid = *search;
-    BruteForceSegmentSearch2D brute;
-    grid.build(coords, surf);
-    brute.build(coords, surf);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<Real> u(-1.0, 5.0), w(0.0, 0.3);
-    for (int i = 0; i < 500; ++i) {
-      const Real lo[2] = {u(rng), u(rng) - 1.0};
-      const Real hi[2] = {lo[0] + w(rng), lo[1] + w(rng)};
-      const Real radius = 0.4;
-      std::vector<LocalIndex> a, b;
-      grid.facetsNear(lo, hi, radius, a);
-      brute.facetsNear(lo, hi, radius, b);
-      // the facets whose segment meets the widened box: among the bounding-box overlaps
-      EXPECT_TRUE(std::includes(b.begin(), b.end(), a.begin(), a.end()));
-      // every facet within `radius` of the box corner lo is listed
-      for (LocalIndex e = 0; e < grid.numFacets(); ++e) {
-        Real xi, p[2];
-        int region;
-        const Real d2 = projectOntoSegment(lo, &coords[2 * e], &coords[2 * e + 2], xi, p, region);
-        if (d2 <= radius * radius) {
-          EXPECT_TRUE(std::binary_search(a.begin(), a.end(), e));
-        }
-      }
-    }
-  }
-}
-
 TEST(ClosestPointSearch, FacetsNearPointListsEveryFacetWithinTheRadius) {
   // exactly the facets within the radius (the tree prunes by distance)
   std::vector<Real> coords;
@@ -242,8 +210,6 @@ TEST(ClosestPointSearch, EmptySurfaceAndInvalidInput) {
     EXPECT_EQ(search->numFacets(), 0);
     EXPECT_FALSE(search->project(x, std::numeric_limits<Real>::infinity()).found());
     std::vector<LocalIndex> near;
-    search->facetsNear(x, x, 1.0, near);
-    EXPECT_TRUE(near.empty());
     search->facetsNearPoint(x, 1.0, near);
     EXPECT_TRUE(near.empty());
     EXPECT_THROW(search->build(coords, tri), InputError);

@@ -154,23 +154,8 @@ TEST(SurfaceInteraction3D, TangentMatchesFiniteDifferences) {
 // it crosses the bisector x = 0, and so does the direction of x - x_P.
 Scene patchOverValley(Real slope, Real x0) {
   Scene sc;
-  const int n = 8;
-  const Real L = 1.0;
-  mesh::Surface v;
-  v.body = 0;
-  v.nodesPerFacet = 3;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const Real x = -L + 2 * L * i / n, y = -L + 2 * L * j / n;
-      sc.coords.insert(sc.coords.end(), {x, y, slope * std::abs(x)});
-    }
-  auto id = [&](int i, int j) { return LocalIndex(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const LocalIndex a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      v.facets.insert(v.facets.end(), {a, b, c, a, c, d});  // counter-clockwise from above: normal up
-    }
-  sc.surfaces.push_back(v);
+  sc.surfaces.push_back(flatGrid(sc.coords, 8, 1.0, true, 0));
+  for (std::size_t n = 0; n < sc.coords.size(); n += 3) sc.coords[n + 2] = slope * std::abs(sc.coords[n]);
   const LocalIndex first = LocalIndex(sc.coords.size() / 3);
   const Real h = 0.3, w = 0.1;  // the patch: 2 x 2 quads of width w at height h, centred at x0, normal down
   for (int j = 0; j <= 2; ++j)

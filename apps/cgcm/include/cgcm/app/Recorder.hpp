@@ -33,6 +33,7 @@ class ContactProbe {
   const mesh::Mesh& mesh_;
   assembly::Problem& problem_;
   LocalIndex upper_, lower_;
+  std::vector<LocalIndex> upperNodes_;  ///< the upper body's surface nodes, sorted
 };
 
 /// Turns converged states into load_curve.csv rows (flushed, so a run that

@@ -35,6 +35,7 @@ struct RunResult {
   double assemblySeconds = 0.0;     ///< bulk residual + tangent evaluations
   double interactionSeconds = 0.0;  ///< interaction: search, kernel, scatter
   double searchSeconds = 0.0;       ///< of which the closest-point search
+  double graphSeconds = 0.0;        ///< the interaction couplings of the matrix graph
   double pathSeconds = 0.0;         ///< the whole path, failed attempts included
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds

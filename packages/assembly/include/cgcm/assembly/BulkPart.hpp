@@ -27,7 +27,6 @@ class BulkPart {
   BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formulation formulation,
            const material::NeoHookean& material);
 
-  int body() const { return body_; }
   const material::NeoHookean& material() const { return material_; }
   LocalIndex numLocalCells() const;
 
@@ -54,7 +53,6 @@ class BulkPart {
     Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i], reference coordinates
   };
   const Map* overlap_;
-  int body_;
   Formulation formulation_;
   int dim_;
   material::NeoHookean material_;

@@ -14,6 +14,7 @@
 // once per neighbour).
 #include <array>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -33,7 +34,6 @@ class InteractionPart {
                   std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor);
 
   const interaction::SurfaceInteraction& interaction() const { return *interaction_; }
-  const std::shared_ptr<interaction::SurfaceInteraction>& interactionPtr() const { return interaction_; }
   /// The graph's search radius now (it follows the cutoff).
   Real searchRadius() const { return searchRadiusFactor_ * interaction_->cutoff(); }
 
@@ -43,8 +43,10 @@ class InteractionPart {
 
   /// f += f_C at u (overlap rows) and, if J is given (in assembly mode),
   /// J += its tangent. Returns the number of tangent entries that fell
-  /// outside J's graph (they are dropped). Collective (the gather).
-  int assemble(const Vector& u, const VectorView& f, Matrix* J);
+  /// outside J's graph (they are dropped). A pair this rank cannot evaluate
+  /// (the surfaces touch) ends its loop with the reason in `failure`, so
+  /// that the caller can stop every rank together. Collective (the gather).
+  int assemble(const Vector& u, const VectorView& f, Matrix* J, std::string& failure);
   /// Seconds the last assemble spent in the closest-point search (AABB trees and queries).
   double lastSearchSeconds() const { return searchSeconds_; }
 
@@ -69,7 +71,6 @@ class InteractionPart {
   Teuchos::RCP<const Import> surfaceImport_;
   Teuchos::RCP<Vector> uSurface_;
   std::vector<Real> coords_;      ///< mesh-wide current coordinates of surface nodes
-  std::vector<Real> bodyForces_;  ///< [3 body + i]: this rank's pairs' forces on the bodies, last assemble
   double searchSeconds_ = 0.0;
 };
 

@@ -27,8 +27,7 @@ struct AssemblyTimings {
   double jacobian = 0.0;     ///< residual + tangent evaluations of the bulk (incl. fill)
   double interaction = 0.0;  ///< interaction: coordinate gather, search, kernel, scatter
   double search = 0.0;       ///< the part of `interaction` in the closest-point search (trees and queries)
-  int residualCalls = 0;
-  int jacobianCalls = 0;
+  double graph = 0.0;        ///< interaction couplings of the matrix graph (checked once per solve) and its fills
 };
 
 /// An interaction tangent entry fell outside the matrix graph (the set of
@@ -53,10 +52,7 @@ class Problem {
   const material::NeoHookean& material(int body) const { return bulk_.at(body).material(); }
   const std::vector<BulkPart>& bulkParts() const { return bulk_; }
 
-  /// Couplings (row node, column node) added to the cell cliques in the graph.
-  /// Rows must be nodes of this rank's overlap map. Takes effect on the next graph().
-  void setExtraCouplings(std::vector<std::pair<LocalIndex, LocalIndex>> nodePairs);
-  /// The current graph (built on first use and after setExtraCouplings).
+  /// The current graph (built on first use and after updateInteractionGraph).
   Teuchos::RCP<const Graph> graph();
   /// A new zero matrix on the current graph.
   Teuchos::RCP<Matrix> createMatrix();
@@ -107,6 +103,10 @@ class Problem {
 
  private:
   void buildGraph();
+  /// The interaction couplings at u within `radius` (timed as `graph`).
+  std::vector<std::pair<LocalIndex, LocalIndex>> interactionCouplings(const Vector& u, Real radius);
+  /// Whether the graph holds `wanted` on every rank (collective).
+  bool graphHoldsEverywhere(const std::vector<std::pair<LocalIndex, LocalIndex>>& wanted) const;
 
   Teuchos::RCP<const DofMap> dofs_;
   std::shared_ptr<const mesh::Mesh> mesh_;

@@ -45,16 +45,9 @@ class ClosestPointSearch {
   /// result does not depend on it.
   virtual Projection project(const Real* x, Real cutoff, LocalIndex hint) const = 0;
   Projection project(const Real* x, Real cutoff) const { return project(x, cutoff, -1); }
-  /// Appends to `out` (sorted, unique) every facet whose bounding box
-  /// overlaps the box [lo - radius, hi + radius]: a superset of the facets
-  /// within `radius` of any point of the box [lo, hi].
-  virtual void facetsNear(const Real* lo, const Real* hi, Real radius,
-                          std::vector<LocalIndex>& out) const = 0;
-  /// Appends to `out` every facet within `radius` of the point x, and
-  /// possibly a few farther ones (the default: facetsNear of the box [x, x]).
-  virtual void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const {
-    facetsNear(x, x, radius, out);
-  }
+  /// Appends to `out`, in facet order, exactly the facets within `radius`
+  /// of the point x (to round-off).
+  virtual void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const = 0;
 };
 
 /// Point-to-segment projection with clamping, shared by the search and the
@@ -135,8 +128,7 @@ KOKKOS_INLINE_FUNCTION Real projectOntoTriangle(const Real x[3], const Real a[3]
 }
 
 /// Reference implementation: loops over all facets (tests, tiny surfaces);
-/// Dim = 2 segments, Dim = 3 triangles. facetsNear lists the facets whose
-/// bounding box overlaps the widened box.
+/// Dim = 2 segments, Dim = 3 triangles.
 template <int Dim>
 class BruteForceSearch final : public ClosestPointSearch {
  public:
@@ -146,8 +138,6 @@ class BruteForceSearch final : public ClosestPointSearch {
   LocalIndex numFacets() const override { return LocalIndex(vertices_.size() / kStride); }
   using ClosestPointSearch::project;
   Projection project(const Real* x, Real cutoff, LocalIndex hint) const override;
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
-  /// Exactly the facets within `radius` of x (to round-off), as AabbTreeSearch.
   void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:
@@ -163,9 +153,8 @@ using BruteForceTriangleSearch3D = BruteForceSearch<3>;
 /// edge it lies on) under the same projection arithmetic and tie rule as
 /// brute force, so the result is brute force's (facet, point, local
 /// coordinates), except at an exact tie between separate parts of the
-/// surface, where CGAL's choice stands. facetsNear lists the facets whose geometry meets the widened
-/// box (a subset of the bounding-box overlaps, still a superset of the
-/// facets within the radius). The tree is rebuilt by build(): CGAL has no refit.
+/// surface, where CGAL's choice stands. The tree is rebuilt by build(): CGAL
+/// has no refit.
 template <int Dim>
 class AabbTreeSearch final : public ClosestPointSearch {
  public:
@@ -179,8 +168,7 @@ class AabbTreeSearch final : public ClosestPointSearch {
   /// A hint within the cutoff replaces the box test and starts CGAL's
   /// traversal at the hint's distance, pruning every farther node.
   Projection project(const Real* x, Real cutoff, LocalIndex hint) const override;
-  void facetsNear(const Real* lo, const Real* hi, Real radius, std::vector<LocalIndex>& out) const override;
-  /// Exactly the facets within `radius` of x (to round-off): a traversal pruned by distance.
+  /// A traversal pruned by distance.
   void facetsNearPoint(const Real* x, Real radius, std::vector<LocalIndex>& out) const override;
 
  private:

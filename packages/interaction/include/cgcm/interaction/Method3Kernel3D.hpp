@@ -132,16 +132,12 @@ inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const
   st.region = region;
 }
 
-/// The blend distance of a projection (SurfaceInteraction.hpp):
+/// The blend distance of the projection of x onto triangle y (SurfaceInteraction.hpp):
 /// rho = r + o^2/delta, o the distance from the foot on the triangle's plane
 /// to the projection (0 inside the face): o^2 = r^2 - h^2, h the height of x
 /// above the plane.
-template <int NF, class S>
-inline S blendDistance3D(const S* z, const FacetPoint& q, int region, Real delta) {
-  S x[3] = {0.0, 0.0, 0.0};
-  for (int a = 0; a < NF; ++a)
-    for (int i = 0; i < 3; ++i) x[i] += q.N[a] * z[3 * a + i];
-  const S* y = z + 3 * NF;
+template <class S>
+inline S blendDistanceAt(const S* x, const S* y, int region, Real delta) {
   S p[3], d[3], e1[3], e2[3], m[3], xa[3];
   footInRegion(x, y, y + 3, y + 6, region, p);
   for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i], e1[i] = y[3 + i] - y[i], e2[i] = y[6 + i] - y[i], xa[i] = x[i] - y[i];
@@ -150,6 +146,15 @@ inline S blendDistance3D(const S* z, const FacetPoint& q, int region, Real delta
   const S r2 = dot3(d, d), hm = dot3(xa, m);
   const S o2 = region == 0 ? S(0.0) : r2 - hm * hm / dot3(m, m);
   return sqrt(r2) + o2 / delta;
+}
+
+/// The same for the quadrature point q of the facet in z (as method3Residual3D).
+template <int NF, class S>
+inline S blendDistance3D(const S* z, const FacetPoint& q, int region, Real delta) {
+  S x[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < NF; ++a)
+    for (int i = 0; i < 3; ++i) x[i] += q.N[a] * z[3 * a + i];
+  return blendDistanceAt(x, z + 3 * NF, region, delta);
 }
 
 }  // namespace detail

@@ -224,16 +224,23 @@ class SurfaceInteraction {
     evaluate(coords.data(), out, withTangent);
   }
 
-  /// Scatter form: calls scatter(const PairContribution&) for every pair.
-  template <class Scatter>
-  void evaluate(const Real* coords, Scatter&& scatter, bool withTangent = true) {
+  /// Scatter form: calls scatter(const PairContribution&) for every pair p
+  /// with include(p) (e.g. the pairs this rank owns); the summary's
+  /// resultants and counts are those of these pairs.
+  template <class Scatter, class Include>
+  void evaluate(const Real* coords, Scatter&& scatter, bool withTangent, Include&& include) {
     beginEvaluation();
     PairContribution c;
     for (const InteractionPair& p : pairs_) {
+      if (!include(p)) continue;
       const PairState st = evaluatePair(coords, p, c, withTangent);
       accumulate(p, st, c);
       scatter(static_cast<const PairContribution&>(c));
     }
+  }
+  template <class Scatter>
+  void evaluate(const Real* coords, Scatter&& scatter, bool withTangent = true) {
+    evaluate(coords, scatter, withTangent, [](const InteractionPair&) { return true; });
   }
 
   /// Sorted, unique (row node, column node) couplings of every pair that can
@@ -300,11 +307,14 @@ class SurfaceInteraction {
   void accumulate(const InteractionPair& p, const PairState& st, const PairContribution& c);
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
   void findTargets3D(const Real* coords, const Real x[3], int l, LocalIndex closest, InteractionPair& p);
+  void keepBlendTargets(Real limit, int maxTargets, InteractionPair& p);
   PairState evaluatePair3D(const Real* coords, const InteractionPair& p, PairContribution& out,
                            bool withTangent) const;
-  /// Calls visit(body, facet, quadrature point, x) for every quadrature point of every surface at `coords`.
-  template <class Visit>
-  void forEachPoint(const Real* coords, Visit&& visit) const;
+  /// Calls visit(body, facet, quadrature point, x) for every quadrature
+  /// point of every surface at `coords`, and facetDone(body, facet) after
+  /// the points of each facet.
+  template <class Visit, class FacetDone>
+  void forEachPoint(const Real* coords, Visit&& visit, FacetDone&& facetDone) const;
   std::size_t pointsPerFacet(int k) const { return dim_ == 3 ? facetRules_[k].size() : std::size_t(rule_.size()); }
   /// Pairs of bodies (k, l) whose surfaces come within `radius` (bounding boxes).
   std::vector<char> bodiesWithin(const Real* coords, Real radius) const;

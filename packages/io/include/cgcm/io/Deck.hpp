@@ -20,8 +20,9 @@ Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);
 void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
                     const std::vector<std::string>& overrides);
 
-/// The number `text` (surrounding blanks allowed, nothing else); throws
-/// InputError "<path>: "<text>" is not a number" otherwise.
+/// The finite number `text` (surrounding blanks allowed, nothing else);
+/// throws InputError "<path>: "<text>" is not a number" otherwise, or
+/// "... is not a finite number" for inf and nan.
 double parseDouble(const std::string& path, const std::string& text);
 
 /// Validates `deck` against `valid` and fills in defaults. Unknown names, wrong
