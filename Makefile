@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench paper jkr-study stability-map sphere-3d
+.PHONY: demo test build configure deps clean bench paper jkr-study stability-map sphere-3d method-study
 
 deps:
 	@bash scripts/install-deps.sh
@@ -56,6 +56,11 @@ sphere-3d: build
 	  --expected=-5.6355e-4 --tolerance 0.02
 	/usr/bin/python3 tests/tools/check_load_curve.py stiffness $(SPHERE3D_OUT)/load_curve.csv \
 	  --from 0.05 --to 0.06 --expected 0.2616 --tolerance 0.02
+
+# Method 1 (volume pairs) against Method 3 on the benchmark for gammaL = 50,
+# 20, 200, 5, 2 (output/validation/method-study/table.csv; doc/validation.md).
+method-study: build
+	@bash tools/run_method_study.sh $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

@@ -13,7 +13,7 @@ using assembly::Vector;
 
 ContactProbe::ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
     : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)),
-      upperNodes_(m.surfaces[c.upperBody].facets) {
+      upperNodes_(m.surfaces[c.upperBody].facets), lowerSurface_(mesh::triangulated(m.surfaces[c.lowerBody])) {
   std::sort(upperNodes_.begin(), upperNodes_.end());
   upperNodes_.erase(std::unique(upperNodes_.begin(), upperNodes_.end()), upperNodes_.end());
 }
@@ -25,10 +25,10 @@ Real ContactProbe::gap(const Vector& u) const {
 }
 
 Real ContactProbe::contactRadius(const Vector& u) const {
-  const std::vector<Real>& x = problem_.surfaceCoordinates(u);
+  const std::vector<Real>& x = problem_.currentCoordinates(u);
   const int dim = mesh_.dim;
   auto search = interaction::makeClosestPointSearch(dim);
-  search->build(x.data(), problem_.interaction()->targetSurface(c_.lowerBody));
+  search->build(x.data(), lowerSurface_);
   // radius: x (the axis is x = 0) in 2D; in 3D the distance from the vertical line through the upper apex
   const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + problem_.nodeValue(u, upper_, 0) : 0.0,
                         dim == 3 ? mesh_.coord(upper_, 1) + problem_.nodeValue(u, upper_, 1) : 0.0};
@@ -63,7 +63,7 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
   if (setup_.balance) columns_.push_back("P_lower");
   columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
   createOnRoot(*disc.dofs->comm(), [&] { csv_ = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns_); });
-  if (disc.interaction)
+  if (disc.problem->hasInteraction())
     createOnRoot(*disc.dofs->comm(), [&] {
       bodyCsv_ = std::make_unique<io::CsvWriter>(dir + "/body_forces.csv",
                                                  std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});

@@ -49,6 +49,10 @@ RCP<Teuchos::EnhancedNumberValidator<int>> intAtLeast(int min) {
   return v;
 }
 
+RCP<Teuchos::EnhancedNumberValidator<int>> intBetween(int min, int max) {
+  return rcp(new Teuchos::EnhancedNumberValidator<int>(min, max));
+}
+
 }  // namespace
 
 assembly::Formulation parseFormulation(const std::string& name) {
@@ -155,7 +159,23 @@ RCP<const ParameterList> validParameters() {
   inter.set("Potential", "Lennard-Jones",
             "\"Lennard-Jones\" (adhesion and repulsion) or \"repulsive\" (its r^-12 part only: a smooth barrier)",
             choices({"Lennard-Jones", "repulsive"}));
-  inter.set("Method", "half-space point", "\"half-space point\" (Method 3)", choices({"half-space point"}));
+  inter.set("Method", "half-space point",
+            "\"half-space point\" (Method 3: each surface point against the other body as a half-space) or "
+            "\"volume pair\" (Method 1: quadrature over pairs of cells of two bodies, the reference; cost grows "
+            "with the cells within the cutoff, and cells near the surfaces should be about r0 or smaller)",
+            choices({"half-space point", "volume pair"}));
+  inter.set("Volume Quadrature Order", 2,
+            "volume pair: Gauss points per direction of a cell for pairs of cells far apart (1 .. 6); closer pairs "
+            "get more, up to the Max Volume Quadrature Order",
+            intBetween(1, 6));
+  inter.set("Max Volume Quadrature Order", 6,
+            "volume pair: most Gauss points per direction for pairs of cells close to each other (1 .. 12 in 2D, "
+            "1 .. 6 in 3D)",
+            intBetween(1, 12));
+  inter.set("Pair List Skin", 1.0,
+            "volume pair: the pair list covers cutoff + skin (units of r0) and is rebuilt when a node has moved "
+            "by half the skin",
+            atLeast(0.01));
   inter.set("gammaL", 50.0, "R0 / r0: geometric scale (22)", atLeast(1e-300));
   inter.set("gammaW", 200.0, "Y / (beta0^2 r0^3 epsilon): energy-density ratio (28)", atLeast(1e-300));
   inter.set("gammaL bar", 0.0, "the paper's equivalent parameter; > 0 replaces gammaL through the Barred Convention",
@@ -187,7 +207,9 @@ RCP<const ParameterList> validParameters() {
             "(the paper's Method 3; "
             "Newton can then find no equilibrium next to such a switch)",
             atLeast(0.0));
-  inter.set("Search Radius Factor", 2.0, "matrix-graph search radius / cutoff (> 1)", atLeast(1.01));
+  inter.set("Search Radius Factor", 2.0,
+            "matrix-graph search radius / cutoff (> 1); volume pair: the radius is cutoff + factor x Pair List Skin",
+            atLeast(1.01));
 
   auto& loading = valid->sublist("Loading", false,
                                  "how the path is followed: the load parameter u is the prescribed displacement");
@@ -279,6 +301,19 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
                      " with Interaction/Cutoff = " + std::to_string(in.get<double>("Cutoff")) +
                      " starts the taper below 2 r0, in the range of the repulsion; need (1 - taper) * cutoff >= 2");
   s.searchRadiusFactor = in.get<double>("Search Radius Factor");
+  s.volumeMethod = in.get<std::string>("Method") == "volume pair";
+  s.volumeOptions.formulation = s.options.formulation;
+  s.volumeOptions.quadratureOrder = in.get<int>("Volume Quadrature Order");
+  s.volumeOptions.maxQuadratureOrder = in.get<int>("Max Volume Quadrature Order");
+  s.volumeOptions.cutoff = s.options.cutoff;
+  s.volumeOptions.skin = in.get<double>("Pair List Skin") * phys.r0;
+  if (s.volumeMethod && s.volumeOptions.maxQuadratureOrder < s.volumeOptions.quadratureOrder)
+    throw InputError("Interaction/Max Volume Quadrature Order = " + std::to_string(s.volumeOptions.maxQuadratureOrder) +
+                     " is below Interaction/Volume Quadrature Order = " +
+                     std::to_string(s.volumeOptions.quadratureOrder));
+  if (s.volumeMethod && threeD && s.volumeOptions.maxQuadratureOrder > interaction::kMaxVolumeOrder3D)
+    throw InputError("Interaction/Max Volume Quadrature Order = " + std::to_string(s.volumeOptions.maxQuadratureOrder) +
+                     ": at most " + std::to_string(interaction::kMaxVolumeOrder3D) + " in 3D");
 
   // Derived scales (THEORY sections 2, 4, 5), for the run's report.
   const Real rS0 = phys.r0 / std::pow(15.0, 1.0 / 6.0);
@@ -535,6 +570,24 @@ void buildFromGmsh(const ParameterList& deck, ProblemSetup& s) {
   s.mesh = m;
 }
 
+// Method 1 integrates over the cells the mesh has: a symmetry plane (or, in
+// plane strain, the symmetry line of the built-in half models) would drop the
+// mirror half of every body from the interaction.
+void checkVolumeMethodModel(const ProblemSetup& s) {
+  if (!s.interaction || !s.interaction->volumeMethod) return;
+  std::vector<std::string> planes;
+  for (const char* set : {"symmetry x", "symmetry y", "symmetry z"})
+    if (s.mesh->nodeSets.count(set)) planes.push_back(set);
+  if (s.formulation == assembly::Formulation::PlaneStrain && s.mesh->nodeSets.count("axis"))
+    planes.push_back("axis (a symmetry line in plane strain)");
+  if (planes.empty()) return;
+  std::string list;
+  for (const auto& p : planes) list += (list.empty() ? "\"" : ", \"") + p + "\"";
+  throw InputError("Interaction/Method = \"volume pair\" integrates over the whole bodies, but the mesh is a "
+                   "symmetric part of them (" + list + "): mirror it (Geometry/Mirror Planes) or use "
+                   "\"half-space point\"");
+}
+
 // Every body must be held against rigid motion by its displacement conditions:
 // with the interaction alone its tangent is singular (or nearly: a weak
 // adhesive spring), and Newton fails without saying why. The conditions of a
@@ -738,6 +791,7 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   }
   checkBodiesAreHeld(s);
   applyBodyMaterials(deck, s);
+  checkVolumeMethodModel(s);
   return s;
 }
 
@@ -750,9 +804,15 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
                     : std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.bodyMaterials);
   if (setup.interaction) {
     const auto& in = *setup.interaction;
-    d.interaction =
-        std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities, in.potential, in.options);
-    d.problem->setInteraction(d.interaction, in.searchRadiusFactor);
+    if (in.volumeMethod) {
+      d.volumeInteraction = std::make_shared<interaction::VolumeInteraction>(*setup.mesh, in.densities, in.potential,
+                                                                             in.volumeOptions);
+      d.problem->setInteraction(d.volumeInteraction, in.searchRadiusFactor);
+    } else {
+      d.interaction = std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities,
+                                                                        in.potential, in.options);
+      d.problem->setInteraction(d.interaction, in.searchRadiusFactor);
+    }
   }
   d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
   for (const auto& c : setup.conditions)
@@ -761,19 +821,22 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
   if (setup.interaction) {
     // gammaW = Y / (beta0^2 r0^3 epsilon) at fixed r0: epsilon, hence every
     // traction, scales with gammaW0 / gammaW.
-    const auto interaction = d.interaction;
+    const auto surface = d.interaction;
+    const auto volume = d.volumeInteraction;
     const Real gammaW0 = setup.interaction->gammaW;
-    parameters.push_back({"gammaW", gammaW0, [interaction, gammaW0](Real gammaW) {
+    parameters.push_back({"gammaW", gammaW0, [surface, volume, gammaW0](Real gammaW) {
                             if (!(gammaW > 0.0)) throw NumericalError("gammaW = " + std::to_string(gammaW) + " <= 0");
-                            interaction->setStrength(gammaW0 / gammaW);
+                            if (surface) surface->setStrength(gammaW0 / gammaW);
+                            if (volume) volume->setStrength(gammaW0 / gammaW);
                           }});
     // gammaL = R0 / r0 at fixed gammaW: r0 scales with gammaL0 / gammaL and
     // epsilon r0^3 stays, so the traction law is T0(r / b) (cutoff included);
     // u keeps the origin of the deck's gammaL.
     const Real gammaL0 = setup.interaction->gammaL;
-    parameters.push_back({"gammaL", gammaL0, [interaction, gammaL0](Real gammaL) {
+    parameters.push_back({"gammaL", gammaL0, [surface, volume, gammaL0](Real gammaL) {
                             if (!(gammaL > 0.0)) throw NumericalError("gammaL = " + std::to_string(gammaL) + " <= 0");
-                            interaction->setLengthScale(gammaL0 / gammaL);
+                            if (surface) surface->setLengthScale(gammaL0 / gammaL);
+                            if (volume) volume->setLengthScale(gammaL0 / gammaL);
                           }});
   }
   d.model = Teuchos::rcp(new solver::ModelEvaluator(d.problem, d.dirichlet, std::move(linearSolver),

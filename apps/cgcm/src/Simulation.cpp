@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
+
+#include <Teuchos_CommHelpers.hpp>
 
 #include "cgcm/app/Recorder.hpp"
 #include "cgcm/app/Setup.hpp"
@@ -251,6 +254,21 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   result.interactionSeconds = t.interaction - timingsBefore.interaction;
   result.searchSeconds = t.search - timingsBefore.search;
   result.graphSeconds = t.graph - timingsBefore.graph;
+  if (const auto* volume = problem->volumeInteraction()) {
+    const auto& vs = volume->summary();
+    long pointPairs = 0, totalPairs = 0;  // of the last evaluation and of all, over all ranks
+    double kernelSeconds = 0.0;           // the slowest rank's
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numPointPairs, Teuchos::outArg(pointPairs));
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.totalPointPairs, Teuchos::outArg(totalPairs));
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_MAX, vs.kernelSeconds, Teuchos::outArg(kernelSeconds));
+    std::ostringstream o;
+    o << "volume pairs (Method 1): " << vs.numPairs << " directed cell pairs within cutoff + skin = "
+      << vs.cutoff + vs.skin << ", " << pointPairs << " quadrature-point pairs per evaluation, quadrature orders up to "
+      << vs.maxOrderUsed << " (" << vs.numAtMaxOrder << " pairs at the maximum " << volume->maxQuadratureOrder()
+      << "), " << vs.numListBuilds << " pair lists built; kernel " << kernelSeconds << " s for " << totalPairs
+      << " point pairs (" << 1e-6 * double(totalPairs) / std::max(kernelSeconds, 1e-300) << " M/s)";
+    result.volumePairs = o.str();
+  }
 
   // Summary: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
   if (root) {

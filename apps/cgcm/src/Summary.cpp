@@ -56,12 +56,14 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
                 double(result.matrixEntries) / std::max<std::size_t>(1, result.matrixRows));
   both(buf);
   std::snprintf(buf, sizeof buf,
-                "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s (closest-point search "
-                "%.3f s) + matrix graph couplings %.3f s + linear solves, NOX and LOCA %.3f s\n",
-                result.pathSeconds, result.assemblySeconds, result.interactionSeconds, result.searchSeconds,
+                "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s (%s %.3f s) + matrix "
+                "graph couplings %.3f s + linear solves, NOX and LOCA %.3f s\n",
+                result.pathSeconds, result.assemblySeconds, result.interactionSeconds,
+                result.volumePairs.empty() ? "closest-point search" : "pair lists", result.searchSeconds,
                 result.graphSeconds,
                 result.pathSeconds - result.assemblySeconds - result.interactionSeconds - result.graphSeconds);
   both(buf);
+  if (!result.volumePairs.empty()) both((result.volumePairs + "\n").c_str());
 }
 
 }  // namespace cgcm::app

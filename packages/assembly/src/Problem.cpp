@@ -132,7 +132,12 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
 }
 
 void Problem::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor) {
-  interactionPart_ = std::make_unique<InteractionPart>(dofs_, *mesh_, std::move(interaction), searchRadiusFactor);
+  interactionPart_ =
+      std::make_unique<SurfaceInteractionPart>(dofs_, *mesh_, std::move(interaction), searchRadiusFactor);
+}
+
+void Problem::setInteraction(std::shared_ptr<interaction::VolumeInteraction> interaction, Real searchRadiusFactor) {
+  interactionPart_ = std::make_unique<VolumeInteractionPart>(dofs_, *mesh_, std::move(interaction), searchRadiusFactor);
 }
 
 std::vector<std::array<Real, 3>> Problem::interactionForces() const {

@@ -69,17 +69,7 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   surfaceNodes_.erase(std::unique(surfaceNodes_.begin(), surfaceNodes_.end()), surfaceNodes_.end());
   if (dim_ == 3) {
     for (const mesh::Surface& sk : surfaces_) {
-      mesh::Surface t;
-      t.body = sk.body;
-      t.nodesPerFacet = 3;
-      const int npf = sk.nodesPerFacet;
-      for (LocalIndex f = 0; f < sk.numFacets(); ++f) {
-        const LocalIndex* n = &sk.facets[std::size_t(f) * npf];
-        t.facets.insert(t.facets.end(), {n[0], n[1], n[2]});
-        if (npf == 4) t.facets.insert(t.facets.end(), {n[0], n[2], n[3]});
-        if (!sk.facetCells.empty()) t.facetCells.insert(t.facetCells.end(), npf == 4 ? 2 : 1, sk.facetCells[f]);
-      }
-      targets_.push_back(std::move(t));
+      targets_.push_back(mesh::triangulated(sk));
       facetRules_.push_back(facetQuadrature(sk.nodesPerFacet == 4 ? 4 : 3, options_.quadraturePoints));
     }
   } else {

@@ -57,4 +57,17 @@ const std::vector<LocalIndex>& Mesh::nodeSet(const std::string& name) const {
   return it->second;
 }
 
+Surface triangulated(const Surface& s) {
+  if (s.nodesPerFacet != 4) return s;
+  Surface t;
+  t.body = s.body;
+  t.nodesPerFacet = 3;
+  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    const LocalIndex* n = &s.facets[std::size_t(f) * 4];
+    t.facets.insert(t.facets.end(), {n[0], n[1], n[2], n[0], n[2], n[3]});
+    if (!s.facetCells.empty()) t.facetCells.insert(t.facetCells.end(), 2, s.facetCells[f]);
+  }
+  return t;
+}
+
 }  // namespace cgcm::mesh

@@ -52,8 +52,8 @@ int ParameterizedModel::parameterIndex(const std::string& name) const {
 
 bool ModelEvaluator::graphCovers(const Vector& x) {
   auto& a = *problem_;
-  if (!a.interaction()) return true;
-  return a.interactionGraphCovers(x, 0.5 * (a.interaction()->cutoff() + a.searchRadius()));
+  if (!a.hasInteraction()) return true;
+  return a.interactionGraphCovers(x, 0.5 * (a.interactionCutoff() + a.searchRadius()));
 }
 
 Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> ModelEvaluator::get_p_space(int l) const {

@@ -171,6 +171,49 @@ TEST(InteractionPart, CoupledTangentAndForcesOnTheBodies) {
   EXPECT_LT(err, 1e-6);
 }
 
+TEST(VolumeInteractionPart, CoupledTangentAndBalancedForces) {
+  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "one rank";
+  auto m = twoBoxes(0.3);
+  auto dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
+  const auto mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
+  Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
+  interaction::VolumeInteractionOptions o;
+  o.formulation = interaction::Formulation::ThreeD;
+  o.quadratureOrder = 1;
+  o.maxQuadratureOrder = 2;
+  o.cutoff = 1.0;
+  o.skin = 0.2;
+  full.setInteraction(std::make_shared<interaction::VolumeInteraction>(
+                          *m, std::vector<Real>{1.0, 1.0}, interaction::makePotential("lennard-jones", 10.0, 0.25), o),
+                      1.5);
+  EXPECT_NEAR(full.searchRadius(), 1.0 + 1.5 * 0.2, 1e-15);  // cutoff + factor x skin
+  ASSERT_NE(full.volumeInteraction(), nullptr);
+  EXPECT_EQ(full.interaction(), nullptr);  // no Method 3
+  const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, 17);
+  Vector uv(dofs->ownedMap());
+  fromStd(u, uv);
+  EXPECT_TRUE(full.updateInteractionGraph(uv));
+  const auto fb = residual(bulk, u), ff = residual(full, u);
+  const auto forces = full.interactionForces();
+  ASSERT_EQ(forces.size(), 2u);
+  std::vector<int> nodeBody(m->numNodes());
+  for (const auto& b : m->blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
+  Real sum[2][3] = {}, scale = 0.0;
+  for (std::size_t i = 0; i < ff.size(); ++i) {
+    sum[nodeBody[i / 3]][i % 3] += ff[i] - fb[i];
+    scale = std::max({scale, std::abs(ff[i]), std::abs(fb[i])});
+  }
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[b][i], -sum[b][i], 1e-12 * scale);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[0][i] + forces[1][i], 0.0, 1e-13 * std::abs(forces[0][2]));
+  EXPECT_GT(forces[0][2], 0.0);  // the bodies attract
+  const Real err = tangentError(full, u, 1e-6);
+  std::printf("[volume interaction part] two boxes 0.3 apart: forces %.4e, %.4e; max|J - J_fd|/max|J| = %.2e\n",
+              forces[0][2], forces[1][2], err);
+  EXPECT_LT(err, 1e-6);
+}
+
 TEST(Problem, IsTheSumOfItsParts) {
   if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "one rank";
   TwoBodies t(13);

@@ -10,6 +10,7 @@
 
 #include "cgcm/assembly/Problem.hpp"
 #include "cgcm/interaction/SurfaceInteraction.hpp"
+#include "cgcm/interaction/VolumeInteraction.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 #include "cgcm/solver/ModelEvaluator.hpp"
@@ -35,11 +36,13 @@ struct ForceResponse {
   std::vector<Real> direction = {};  ///< unit vector (dim entries), or empty
 };
 
-/// The interaction between the bodies (Method 3) and its scales.
+/// The interaction between the bodies (Method 3 or Method 1) and its scales.
 struct InteractionSetup {
   std::shared_ptr<const interaction::PairPotential> potential;
   std::vector<Real> densities;  ///< reference density per body
-  interaction::SurfaceInteractionOptions options;
+  interaction::SurfaceInteractionOptions options;         ///< Method 3
+  bool volumeMethod = false;                              ///< Method 1 ("volume pair") instead
+  interaction::VolumeInteractionOptions volumeOptions;    ///< Method 1
   Real searchRadiusFactor = 2.0;  ///< graph search radius / cutoff (> 1)
   Real gammaL = 0.0, gammaW = 0.0;  ///< the deck's scaling parameters (THEORY section 4)
 };
@@ -94,7 +97,8 @@ assembly::Formulation parseFormulation(const std::string& name);
 struct Discretization {
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
-  std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the problem's, or null
+  std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the problem's Method 3, or null
+  std::shared_ptr<interaction::VolumeInteraction> volumeInteraction;  ///< the problem's Method 1, or null
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   Teuchos::RCP<solver::ModelEvaluator> model;
 };

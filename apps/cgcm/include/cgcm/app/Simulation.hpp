@@ -40,6 +40,7 @@ struct RunResult {
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
+  std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
 };
 
 /// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,

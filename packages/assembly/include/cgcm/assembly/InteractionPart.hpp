@@ -1,25 +1,16 @@
 #pragma once
-// The interaction between the bodies (Method 3) as a part of the discrete
-// problem: gathers the current coordinates of every surface node on every
-// rank (surfaces are small next to volumes), runs the closest-point search
-// and the pair kernels of interaction::SurfaceInteraction, and scatters the
-// pairs this rank owns (those of facets of its cells) into the overlap rows.
-// It also lists the node couplings the matrix graph needs and sums the
-// interaction force on each body.
-//
-// One part serves all bodies: each body's surface gets one AABB tree per
-// evaluation, shared by every pair of bodies, and pairs of bodies farther
-// apart than the cutoff are skipped by a bounding-box test inside
-// SurfaceInteraction (one part per pair of bodies would rebuild each tree
-// once per neighbour).
+// The interaction between the bodies as a part of the discrete problem: what
+// the Problem asks of it, whichever method evaluates it (Method 3 on the
+// surfaces: SurfaceInteractionPart; Method 1 over element pairs:
+// VolumeInteractionPart). A part writes the forces of the pairs this rank
+// owns into the overlap rows, lists the node couplings the matrix graph
+// needs, and sums the interaction force on each body.
 #include <array>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "cgcm/assembly/DofMap.hpp"
-#include "cgcm/interaction/SurfaceInteraction.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 
 namespace cgcm::assembly {
@@ -27,51 +18,54 @@ namespace cgcm::assembly {
 class InteractionPart {
  public:
   using VectorView = Vector::dual_view_type::t_dev;
+  virtual ~InteractionPart() = default;
 
-  /// The graph's search radius is `searchRadiusFactor` (> 1) times the
-  /// interaction's current cutoff. Throws InputError for a factor <= 1.
-  InteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
-                  std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor);
-
-  const interaction::SurfaceInteraction& interaction() const { return *interaction_; }
-  /// The graph's search radius now (it follows the cutoff).
-  Real searchRadius() const { return searchRadiusFactor_ * interaction_->cutoff(); }
-
-  /// Current coordinates (X + u) of every surface node of every body, as a
-  /// mesh-wide array (dim entries per node; other nodes hold X). Collective.
-  const std::vector<Real>& surfaceCoordinates(const Vector& u);
+  /// The interaction's current cutoff (absolute).
+  virtual Real cutoff() const = 0;
+  /// The graph's search radius now (a factor > 1 times the cutoff).
+  virtual Real searchRadius() const = 0;
 
   /// f += f_C at u (overlap rows) and, if J is given (in assembly mode),
   /// J += its tangent. Returns the number of tangent entries that fell
-  /// outside J's graph (they are dropped). A pair this rank cannot evaluate
-  /// (the surfaces touch) ends its loop with the reason in `failure`, so
-  /// that the caller can stop every rank together. Collective (the gather).
-  int assemble(const Vector& u, const VectorView& f, Matrix* J, std::string& failure);
-  /// Seconds the last assemble spent in the closest-point search (AABB trees and queries).
-  double lastSearchSeconds() const { return searchSeconds_; }
+  /// outside J's graph (they are dropped). A failure this rank meets (e.g.
+  /// touching surfaces) ends its loop with the reason in `failure`, so that
+  /// the caller can stop every rank together. Collective.
+  virtual int assemble(const Vector& u, const VectorView& f, Matrix* J, std::string& failure) = 0;
+  /// Seconds the last assemble spent searching (trees, pair lists).
+  virtual double lastSearchSeconds() const = 0;
 
   /// The couplings (row node, column node) of every pair that can occur for
-  /// points within `radius` of another body at u, rows on this rank's overlap
-  /// map. Collective.
-  std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Vector& u, Real radius);
+  /// bodies within `radius` of each other at u, rows on this rank's overlap
+  /// map, sorted and unique. Collective.
+  virtual std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Vector& u, Real radius) = 0;
 
-  /// Per body: the resultant of the interaction forces applied to it (x, y,
-  /// z; z = 0 in 2D) at the state of the last assemble, summed over ranks.
-  /// Collective.
-  std::vector<std::array<Real, 3>> forces() const;
+  /// Per body: the resultant of the interaction forces on it (x, y, z; z = 0
+  /// in 2D) at the state of the last assemble, summed over ranks. Collective.
+  virtual std::vector<std::array<Real, 3>> forces() const = 0;
+
+  /// Current coordinates (X + u), as a mesh-wide array (dim entries per
+  /// node), of every node the interaction reads; other nodes hold X. Collective.
+  virtual const std::vector<Real>& currentCoordinates(const Vector& u) = 0;
+};
+
+/// Current coordinates of a set of nodes on every rank: the displacements
+/// of their dofs imported from their owners each call.
+class ReplicatedCoordinates {
+ public:
+  /// `nodes`: the nodes to replicate (any order, repeats allowed).
+  ReplicatedCoordinates(const DofMap& dofs, const mesh::Mesh& mesh, const std::vector<LocalIndex>& nodes);
+  /// X + u on the nodes, X elsewhere (mesh-wide array). Collective.
+  const std::vector<Real>& update(const Vector& u);
 
  private:
-  Teuchos::RCP<const DofMap> dofs_;
   const mesh::Mesh* mesh_;
-  int dim_;
-  std::shared_ptr<interaction::SurfaceInteraction> interaction_;
-  Real searchRadiusFactor_;
-  std::vector<std::vector<char>> ownsFacet_;  ///< [body][facet]: this rank evaluates it
-  Teuchos::RCP<const Map> surfaceMap_;        ///< every surface dof, on every rank
-  Teuchos::RCP<const Import> surfaceImport_;
-  Teuchos::RCP<Vector> uSurface_;
-  std::vector<Real> coords_;      ///< mesh-wide current coordinates of surface nodes
-  double searchSeconds_ = 0.0;
+  Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<const Import> import_;
+  Teuchos::RCP<Vector> values_;
+  std::vector<Real> coords_;
 };
+
+/// Per body, the three resultant components of `local` summed over the ranks of `comm`.
+std::vector<std::array<Real, 3>> sumOverRanks(const Comm& comm, const std::vector<std::array<Real, 3>>& local);
 
 }  // namespace cgcm::assembly

@@ -14,8 +14,11 @@
 #include "cgcm/assembly/DofMap.hpp"
 #include "cgcm/assembly/Formulation.hpp"
 #include "cgcm/assembly/InteractionPart.hpp"
+#include "cgcm/assembly/SurfaceInteractionPart.hpp"
+#include "cgcm/assembly/VolumeInteractionPart.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/SurfaceInteraction.hpp"
+#include "cgcm/interaction/VolumeInteraction.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 
@@ -64,14 +67,27 @@ class Problem {
   /// outside the graph.
   void evaluate(const Vector& u, Vector& f, Matrix* J);
 
-  /// Adds the interaction part (Method 3) to every evaluation. The matrix
-  /// graph holds the couplings of all surface facets within the search
+  /// Adds the interaction part to every evaluation: Method 3 (half-space
+  /// point formulation on the surfaces) or Method 1 (element pairs). The
+  /// matrix graph holds the couplings of everything within the search
   /// radius, `searchRadiusFactor` (> 1) times the interaction's current
-  /// cutoff, of each other, refreshed by updateInteractionGraph.
+  /// reach (the cutoff; Method 1: cutoff + skin), refreshed by
+  /// updateInteractionGraph.
   void setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor);
+  void setInteraction(std::shared_ptr<interaction::VolumeInteraction> interaction, Real searchRadiusFactor);
+  bool hasInteraction() const { return bool(interactionPart_); }
+  /// Method 3's interaction, or null (no interaction, or Method 1).
   const interaction::SurfaceInteraction* interaction() const {
-    return interactionPart_ ? &interactionPart_->interaction() : nullptr;
+    const auto* part = dynamic_cast<const SurfaceInteractionPart*>(interactionPart_.get());
+    return part ? &part->interaction() : nullptr;
   }
+  /// Method 1's interaction, or null.
+  const interaction::VolumeInteraction* volumeInteraction() const {
+    const auto* part = dynamic_cast<const VolumeInteractionPart*>(interactionPart_.get());
+    return part ? &part->interaction() : nullptr;
+  }
+  /// The interaction's reach now (0 without interaction).
+  Real interactionCutoff() const { return interactionPart_ ? interactionPart_->cutoff() : 0.0; }
   /// The graph's search radius now (it follows the cutoff; 0 without interaction).
   Real searchRadius() const { return interactionPart_ ? interactionPart_->searchRadius() : 0.0; }
   /// Refreshes the interaction couplings from the state u: if some are missing
@@ -86,9 +102,10 @@ class Problem {
   /// tangent entries outside the graph (it then threw GraphOutdatedError).
   bool graphOutdated() const { return graphOutdated_; }
   void clearGraphOutdated() { graphOutdated_ = false; }
-  /// Current coordinates (X + u) of every surface node of every body, as a
-  /// mesh-wide array (dim entries per node; other nodes hold X). Collective.
-  const std::vector<Real>& surfaceCoordinates(const Vector& u) { return interactionPart_->surfaceCoordinates(u); }
+  /// Current coordinates (X + u) of every node the interaction reads (every
+  /// surface node at least), as a mesh-wide array (dim entries per node;
+  /// other nodes hold X). Collective; requires an interaction.
+  const std::vector<Real>& currentCoordinates(const Vector& u) { return interactionPart_->currentCoordinates(u); }
   /// Per body: the interaction force on it at the state of the last
   /// evaluation (x, y, z), summed over ranks. Collective; empty without interaction.
   std::vector<std::array<Real, 3>> interactionForces() const;

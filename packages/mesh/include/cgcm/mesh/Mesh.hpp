@@ -42,6 +42,11 @@ struct Surface {
   LocalIndex numFacets() const { return LocalIndex(facets.size() / nodesPerFacet); }
 };
 
+/// The surface with every quad4 facet split into the triangles (0, 1, 2),
+/// (0, 2, 3) (facet f -> 2f, 2f + 1; facetCells follow); triangles and 2D
+/// segments unchanged.
+Surface triangulated(const Surface& surface);
+
 struct Mesh {
   int dim = 2;                    ///< spatial dimension of the coordinates (2 or 3)
   std::vector<Real> coords;       ///< reference coordinates, dim per node

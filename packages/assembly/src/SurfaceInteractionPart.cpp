@@ -1,0 +1,93 @@
+#include "cgcm/assembly/SurfaceInteractionPart.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "cgcm/core/Error.hpp"
+
+namespace cgcm::assembly {
+
+namespace {
+
+std::vector<LocalIndex> surfaceNodes(const interaction::SurfaceInteraction& si) {
+  std::vector<LocalIndex> nodes;
+  for (int b = 0; b < si.numBodies(); ++b) nodes.insert(nodes.end(), si.surface(b).facets.begin(), si.surface(b).facets.end());
+  return nodes;
+}
+
+}  // namespace
+
+SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
+                                               std::shared_ptr<interaction::SurfaceInteraction> interaction,
+                                               Real searchRadiusFactor)
+    : dofs_(std::move(dofs)), mesh_(&mesh), dim_(dofs_->dofsPerNode()), interaction_(std::move(interaction)),
+      searchRadiusFactor_(searchRadiusFactor), coords_(*dofs_, mesh, surfaceNodes(*interaction_)) {
+  if (!(searchRadiusFactor > 1.0))
+    throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +
+                     ": the graph search radius must exceed the interaction cutoff (factor > 1)");
+  ownsFacet_.assign(interaction_->numBodies(), {});
+  const int rank = dofs_->comm()->getRank();
+  for (int b = 0; b < interaction_->numBodies(); ++b) {
+    const auto& surf = interaction_->surface(b);
+    if (surf.facetCells.size() != std::size_t(surf.numFacets()))
+      throw std::logic_error("surface without facet-to-cell map");
+    ownsFacet_[b].resize(surf.numFacets());
+    for (LocalIndex f = 0; f < surf.numFacets(); ++f) ownsFacet_[b][f] = dofs_->cellOwner(surf.facetCells[f]) == rank;
+  }
+}
+
+int SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& failure) {
+  const std::vector<Real>& x = coords_.update(u);
+  const auto t0 = std::chrono::steady_clock::now();
+  interaction_->updatePairs(x.data());
+  searchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Map& overlap = *dofs_->overlapMap();
+  Matrix::local_matrix_device_type lclJ;
+  Teuchos::RCP<const Map> colMap;
+  if (J) {
+    lclJ = J->getLocalMatrixDevice();
+    colMap = J->getColMap();
+  }
+  int dropped = 0;
+  auto scatter = [&](const interaction::PairContribution& c) {
+    LocalIndex rows[12], cols[interaction::kMaxContributionColumns];
+    const int nrows = dim_ * c.numRowNodes;
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < dim_; ++i) rows[dim_ * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));
+    for (int r = 0; r < nrows; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
+    if (!J) return;
+    // the point's facet and every facet its projection is blended over
+    const int ncols = dim_ * c.numColNodes;
+    for (int b = 0; b < c.numColNodes; ++b)
+      for (int j = 0; j < dim_; ++j) cols[dim_ * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
+    // sumIntoValues skips columns missing from the row and returns how many it found
+    for (int r = 0; r < nrows; ++r) dropped += ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
+  };
+  // each pair is evaluated by exactly one rank
+  auto owned = [&](const interaction::InteractionPair& p) { return bool(ownsFacet_[p.body][p.facet]); };
+  try {
+    interaction_->evaluate(x.data(), scatter, J != nullptr, owned);
+  } catch (const NumericalError& e) {
+    failure = e.what();
+  }
+  return dropped;
+}
+
+std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteractionPart::couplings(const Vector& u, Real radius) {
+  const std::vector<Real>& x = coords_.update(u);
+  const Map& overlap = *dofs_->overlapMap();
+  std::vector<std::pair<LocalIndex, LocalIndex>> wanted;
+  for (const auto& rc : interaction_->couplings(x.data(), radius))
+    if (overlap.getLocalElement(dofs_->dof(rc.first, 0)) != Teuchos::OrdinalTraits<LocalIndex>::invalid())
+      wanted.push_back(rc);
+  return wanted;
+}
+
+std::vector<std::array<Real, 3>> SurfaceInteractionPart::forces() const {
+  return sumOverRanks(*dofs_->comm(), interaction_->summary().resultant);  // this rank's pairs, summed
+}
+
+}  // namespace cgcm::assembly

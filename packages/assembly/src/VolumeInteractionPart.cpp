@@ -1,0 +1,87 @@
+#include "cgcm/assembly/VolumeInteractionPart.hpp"
+
+#include <chrono>
+#include <string>
+
+#include "cgcm/core/Error.hpp"
+
+namespace cgcm::assembly {
+
+namespace {
+
+std::vector<LocalIndex> cellNodes(const mesh::Mesh& mesh) {
+  std::vector<LocalIndex> nodes;
+  for (const auto& b : mesh.blocks) nodes.insert(nodes.end(), b.connectivity.begin(), b.connectivity.end());
+  return nodes;
+}
+
+}  // namespace
+
+VolumeInteractionPart::VolumeInteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
+                                             std::shared_ptr<interaction::VolumeInteraction> interaction,
+                                             Real searchRadiusFactor)
+    : dofs_(std::move(dofs)), interaction_(std::move(interaction)), searchRadiusFactor_(searchRadiusFactor),
+      // every node of every cell: the bodies' volumes near each other are not known in advance
+      coords_(*dofs_, mesh, cellNodes(mesh)) {
+  if (!(searchRadiusFactor > 1.0))
+    throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +
+                     ": the graph search radius must exceed the interaction cutoff (factor > 1)");
+  const int rank = dofs_->comm()->getRank();
+  ownsCell_.resize(mesh.numCells());
+  for (LocalIndex c = 0; c < mesh.numCells(); ++c) ownsCell_[c] = dofs_->cellOwner(c) == rank;
+  const int dim = dofs_->dofsPerNode();
+  const Map& overlap = *dofs_->overlapMap();
+  rowIds_ = Kokkos::View<LocalIndex**>("cgcm::volume_row_ids", mesh.numNodes(), dim);
+  for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
+    for (int i = 0; i < dim; ++i) rowIds_(n, i) = overlap.getLocalElement(dofs_->dof(n, i));
+}
+
+int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& /*failure*/) {
+  const std::vector<Real>& x = coords_.update(u);
+  const auto t0 = std::chrono::steady_clock::now();
+  interaction_->updatePairs(x.data());
+  searchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int dim = dofs_->dofsPerNode();
+  Matrix::local_matrix_device_type lclJ;
+  Kokkos::View<LocalIndex**> colIds;
+  if (J) {
+    lclJ = J->getLocalMatrixDevice();
+    const Map& colMap = *J->getColMap();
+    colIds = Kokkos::View<LocalIndex**>("cgcm::volume_col_ids", rowIds_.extent(0), dim);
+    for (std::size_t n = 0; n < rowIds_.extent(0); ++n)
+      for (int i = 0; i < dim; ++i) colIds(n, i) = colMap.getLocalElement(dofs_->dof(LocalIndex(n), i));
+  }
+  Kokkos::View<int[1]> dropped("cgcm::volume_dropped");
+  const auto rowIds = rowIds_;
+  const bool withTangent = J != nullptr;
+  auto scatter = [=](const interaction::VolumeContribution& c, long) {
+    LocalIndex rows[3 * interaction::kMaxCellNodes], cols[6 * interaction::kMaxCellNodes];
+    const int nr = dim * c.numRowNodes, nc = dim * c.numColNodes;
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < dim; ++i) rows[dim * a + i] = rowIds(c.rowNodes[a], i);
+    for (int r = 0; r < nr; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
+    if (!withTangent) return;
+    for (int b = 0; b < c.numColNodes; ++b)
+      for (int j = 0; j < dim; ++j) cols[dim * b + j] = colIds(c.colNodes[b], j);
+    int missing = 0;
+    // sumIntoValues skips columns missing from the row and returns how many it found
+    for (int r = 0; r < nr; ++r) missing += nc - lclJ.sumIntoValues(rows[r], cols, nc, c.K[r], false, true);
+    if (missing) Kokkos::atomic_add(&dropped(0), missing);
+  };
+  interaction_->evaluate(x.data(), scatter, withTangent, ownsCell_);
+  return dropped(0);
+}
+
+std::vector<std::pair<LocalIndex, LocalIndex>> VolumeInteractionPart::couplings(const Vector& u, Real radius) {
+  const std::vector<Real>& x = coords_.update(u);
+  std::vector<std::pair<LocalIndex, LocalIndex>> wanted;
+  for (const auto& rc : interaction_->couplings(x.data(), radius))
+    if (rowIds_(rc.first, 0) >= 0) wanted.push_back(rc);
+  return wanted;
+}
+
+std::vector<std::array<Real, 3>> VolumeInteractionPart::forces() const {
+  return sumOverRanks(*dofs_->comm(), interaction_->summary().resultant);
+}
+
+}  // namespace cgcm::assembly

@@ -1,0 +1,473 @@
+#pragma once
+// Method 1 (the paper's eq. 16): the interaction energy of two bodies as the
+// double volume integral of beta1 beta2 phi(|x1 - x2|) over pairs of their
+// elements, evaluated by quadrature over both elements, with its exact
+// gradient (the nodal forces) and Hessian (the tangent). The reference for
+// Method 3, and the answer where the half-space approximation fails (small
+// gammaL). Point-pair laws per formulation: VolumePairLaw.hpp.
+//
+// Pair list: every (cell of body k, cell of body l) pair whose current
+// bounding boxes come within cutoff + skin, found with CGAL's box
+// intersection; kept until a node has moved by more than skin / 2 since the
+// list was built (then no pair within the cutoff can be missing), so the
+// energy is one smooth function between rebuilds. Each unordered pair is
+// listed twice, once per direction: the directed pair (row cell, column
+// cell) gives the forces on the row cell's nodes only, so a rank evaluates
+// the pairs of the cells it owns and writes only rows it holds. Both
+// directions use the same quadrature: the forces on the two bodies are
+// equal and opposite to round-off.
+//
+// Quadrature: tensor Gauss-Legendre of order n per direction (Quad4, Hex8;
+// Tet4: the same on each of the four hexahedra that split it, one per
+// vertex, through the edge midpoints, face centroids and the centroid: a
+// rule invariant under every permutation of the vertices, so that mirror
+// images of a mesh get mirror images of its points, with positive weights;
+// n <= kMaxTetOrder), n chosen per pair when the list is built:
+// n = base order + ceil(size / max(distance, r0 / 2)), at most the maximum
+// order, with size the larger cell diameter and distance the gap between
+// the cells' bounding boxes, so that close pairs, where the integrand varies
+// on the scale of the gap, get more points.
+//
+// The kernel is a Kokkos functor over the directed pairs (no virtual calls,
+// no allocation); it hands each pair's element vector and matrix to a
+// scatter functor the caller supplies (assembly: atomic adds into Tpetra's
+// local views).
+#include <Kokkos_Core.hpp>
+
+#include <array>
+#include <chrono>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "cgcm/core/Types.hpp"
+#include "cgcm/fem/Elements.hpp"
+#include "cgcm/interaction/Method3Kernel.hpp"
+#include "cgcm/interaction/PairPotential.hpp"
+#include "cgcm/interaction/VolumePairLaw.hpp"
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::interaction {
+
+/// Highest quadrature order per direction (the kernel's stack arrays hold
+/// one cell's points: 12^2 in 2D, 6^3 in 3D).
+constexpr int kMaxVolumeOrder2D = 12;
+constexpr int kMaxVolumeOrder3D = 6;
+constexpr int kMaxTetOrder = 4;
+constexpr int kMaxCellPoints = 256;  ///< 6^3 (Hex8), 4 x 4^3 (Tet4)
+constexpr int kMaxCellNodes = 8;
+
+struct VolumeInteractionOptions {
+  Formulation formulation = Formulation::PlaneStrain;
+  /// Gauss points per direction of a cell for pairs far apart (>= 1).
+  int quadratureOrder = 2;
+  /// Most points per direction for close pairs; 0: the largest the kernel
+  /// holds (kMaxVolumeOrder2D, kMaxVolumeOrder3D).
+  int maxQuadratureOrder = 0;
+  /// Absolute cutoff: pairs of cells whose bounding boxes are farther apart
+  /// are skipped. <= 0 selects 10 r0 (the traction between flat blocks is then
+  /// within 0.2 % of sigma_max; 5 r0: 1 %).
+  Real cutoff = 0.0;
+  /// Verlet skin (absolute): the pair list covers cutoff + skin and is rebuilt
+  /// when a node has moved by more than skin / 2. <= 0 selects r0.
+  Real skin = 0.0;
+};
+
+/// One directed pair: the forces on rowCell's nodes from colCell (mesh-wide
+/// cell indices), `order` Gauss points per direction in both cells.
+struct VolumePair {
+  LocalIndex rowCell = 0;
+  LocalIndex colCell = 0;
+  int order = 2;
+};
+
+/// The contribution of a directed pair, ready to scatter: node-major dofs,
+/// f[dim a + i] for rowNodes[a]; K[dim a + i][dim b + j] = d f / d x_j(colNodes[b]),
+/// colNodes = the row cell's nodes, then the column cell's.
+struct VolumeContribution {
+  int dim = 2;
+  int rowBody = 0;
+  int numRowNodes = 0;
+  int numColNodes = 0;
+  LocalIndex rowNodes[kMaxCellNodes];
+  LocalIndex colNodes[2 * kMaxCellNodes];
+  Real energy = 0.0;  ///< half the pair's energy (the reverse direction adds the other half)
+  Real f[3 * kMaxCellNodes];
+  Real K[3 * kMaxCellNodes][6 * kMaxCellNodes];
+};
+
+/// Counts of the last updatePairs / evaluate.
+struct VolumeInteractionSummary {
+  Real cutoff = 0.0;
+  Real skin = 0.0;
+  long numListBuilds = 0;          ///< pair lists built so far
+  LocalIndex numPairs = 0;         ///< directed pairs in the list
+  long numPointPairs = 0;          ///< quadrature-point pairs of the last evaluate (this rank)
+  int maxOrderUsed = 0;            ///< highest quadrature order in the list
+  LocalIndex numAtMaxOrder = 0;    ///< directed pairs capped at the maximum order
+  Real minCellGap = 0.0;           ///< smallest bounding-box gap between paired cells at the last build
+  Real energy = 0.0;               ///< interaction energy of the pairs evaluated (last evaluate)
+  long totalPointPairs = 0;        ///< quadrature-point pairs of every evaluate so far (this rank)
+  double kernelSeconds = 0.0;      ///< wall time of the kernel (with the scatter) so far
+  /// Per body: resultant of the interaction forces on it (last evaluate, pairs evaluated here).
+  std::vector<std::array<Real, 3>> resultant;
+};
+
+/// c12, c6 of a potential of inverse powers (Lennard-Jones: eps r0^12, 2 eps r0^6;
+/// repulsive: eps r0^12, 0). Throws InputError for other potentials.
+InversePowerPair inversePowerForm(const PairPotential& potential);
+
+namespace detail {
+
+/// Quadrature points of one cell at the current coordinates.
+struct CellPoints {
+  int count = 0;
+  int numNodes = 0;
+  Real N[kMaxCellPoints][kMaxCellNodes];
+  Real x[kMaxCellPoints][3];
+  Real W[kMaxCellPoints];  ///< beta0 w det J0 (x 2 pi R axisymmetric)
+};
+
+struct VolumeMeshView {
+  Kokkos::View<const LocalIndex* [kMaxCellNodes]> cellNodes;
+  Kokkos::View<const int*> cellType;  ///< mesh::CellType as int
+  Kokkos::View<const int*> cellBody;
+  Kokkos::View<const Real*> density;  ///< per body
+  Kokkos::View<const Real*> refCoords;
+  Kokkos::View<const Real**> gaussPoints;   ///< [order][i] on [0, 1]
+  Kokkos::View<const Real**> gaussWeights;  ///< [order][i], sum 1
+};
+
+/// Parent coordinates xi of the point (s, t, u) in [0, 1]^3 of the
+/// hexahedron of vertex v of the parent tetrahedron (corners: the vertex,
+/// the midpoints of its edges, the centroids of its faces, the centroid;
+/// axes towards the other vertices in increasing order), and det(d xi / d stu).
+KOKKOS_INLINE_FUNCTION void tetSubHexPoint(int v, Real s, Real t, Real u, Real (&xi)[3], Real& det) {
+  Real V[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  int o[3], k = 0;
+  for (int w = 0; w < 4; ++w)
+    if (w != v) o[k++] = w;
+  Real corner[8][3];  // index i + 2 j + 4 k for the corner (i, j, k)
+  for (int c = 0; c < 8; ++c) {
+    const int bits[3] = {c & 1, (c >> 1) & 1, (c >> 2) & 1};
+    Real count = 1.0;
+    for (int d = 0; d < 3; ++d) corner[c][d] = V[v][d];
+    for (int a = 0; a < 3; ++a)
+      if (bits[a]) {
+        count += 1.0;
+        for (int d = 0; d < 3; ++d) corner[c][d] += V[o[a]][d];
+      }
+    for (int d = 0; d < 3; ++d) corner[c][d] /= count;
+  }
+  const Real p[3] = {s, t, u};
+  Real J[3][3] = {};
+  for (int d = 0; d < 3; ++d) xi[d] = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const int bits[3] = {c & 1, (c >> 1) & 1, (c >> 2) & 1};
+    Real f[3], df[3];
+    for (int a = 0; a < 3; ++a) {
+      f[a] = bits[a] ? p[a] : 1.0 - p[a];
+      df[a] = bits[a] ? 1.0 : -1.0;
+    }
+    const Real w = f[0] * f[1] * f[2];
+    const Real dw[3] = {df[0] * f[1] * f[2], f[0] * df[1] * f[2], f[0] * f[1] * df[2]};
+    for (int d = 0; d < 3; ++d) {
+      xi[d] += w * corner[c][d];
+      for (int a = 0; a < 3; ++a) J[d][a] += dw[a] * corner[c][d];
+    }
+  }
+  det = std::abs(J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                 J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]));
+}
+
+template <int Dim, class Element>
+KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
+                                         bool axisymmetric, CellPoints& out) {
+  constexpr int nn = Element::numNodes;
+  constexpr bool tet = Dim == 3 && nn == 4;
+  if (tet && order > kMaxTetOrder) order = kMaxTetOrder;
+  out.numNodes = nn;
+  out.count = 0;
+  const Real beta0 = m.density(m.cellBody(cell));
+  const int perBlock = Dim == 2 ? order * order : order * order * order;
+  const int total = tet ? 4 * perBlock : perBlock;
+  for (int q = 0; q < total; ++q) {
+    const int r = q % perBlock;
+    const int idx[3] = {r % order, (r / order) % order, r / (order * order)};
+    Real xi[3], w = 1.0;
+    for (int d = 0; d < Dim; ++d) {
+      xi[d] = m.gaussPoints(order, idx[d]);
+      w *= m.gaussWeights(order, idx[d]);
+    }
+    Real jacobianScale = 1.0;
+    if constexpr (tet) {
+      const Real s = xi[0], t = xi[1], u = xi[2];
+      tetSubHexPoint(q / perBlock, s, t, u, xi, jacobianScale);
+    } else {
+      for (int d = 0; d < Dim; ++d) xi[d] = 2.0 * xi[d] - 1.0;  // [0, 1] -> [-1, 1]
+      jacobianScale = Dim == 2 ? 4.0 : 8.0;
+    }
+    Real N[nn], dN[nn][Dim];
+    Real xiDim[Dim];
+    for (int d = 0; d < Dim; ++d) xiDim[d] = xi[d];
+    Element::shape(xiDim, N, dN);
+    Real J0[Dim][Dim] = {}, X[Dim] = {}, xc[Dim] = {};
+    for (int a = 0; a < nn; ++a) {
+      const LocalIndex node = m.cellNodes(cell, a);
+      for (int i = 0; i < Dim; ++i) {
+        const Real Xi = m.refCoords(Dim * node + i);
+        X[i] += N[a] * Xi;
+        xc[i] += N[a] * x[Dim * node + i];
+        for (int j = 0; j < Dim; ++j) J0[i][j] += Xi * dN[a][j];
+      }
+    }
+    Real det;
+    if constexpr (Dim == 2)
+      det = J0[0][0] * J0[1][1] - J0[0][1] * J0[1][0];
+    else
+      det = J0[0][0] * (J0[1][1] * J0[2][2] - J0[1][2] * J0[2][1]) -
+            J0[0][1] * (J0[1][0] * J0[2][2] - J0[1][2] * J0[2][0]) +
+            J0[0][2] * (J0[1][0] * J0[2][1] - J0[1][1] * J0[2][0]);
+    constexpr Real twoPi = 6.28318530717958647693;
+    const int k = out.count++;
+    out.W[k] = beta0 * w * jacobianScale * det * (axisymmetric ? twoPi * X[0] : 1.0);
+    for (int a = 0; a < nn; ++a) out.N[k][a] = N[a];
+    for (int i = 0; i < Dim; ++i) out.x[k][i] = xc[i];
+  }
+}
+
+template <int Dim>
+KOKKOS_INLINE_FUNCTION void cellPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
+                                       bool axisymmetric, CellPoints& out) {
+  if constexpr (Dim == 2) {
+    tensorPoints<2, fem::Quad4>(m, cell, order, x, axisymmetric, out);
+  } else {
+    if (m.cellType(cell) == int(mesh::CellType::Hex8))
+      tensorPoints<3, fem::Hex8>(m, cell, order, x, false, out);
+    else
+      tensorPoints<3, fem::Tet4>(m, cell, order, x, false, out);
+  }
+}
+
+template <Formulation F>
+KOKKOS_INLINE_FUNCTION void pointPairLaw(const InversePowerPair& c, const Real* x1, const Real* x2, Real& psi,
+                                         Real* g, Real (*H11)[3], Real (*H12)[3]) {
+  if constexpr (F == Formulation::ThreeD)
+    pairLaw3D(c, x1, x2, psi, g, H11, H12);
+  else if constexpr (F == Formulation::PlaneStrain)
+    pairLawPlaneStrain(c, x1, x2, psi, g, H11, H12);
+  else
+    pairLawAxisymmetric(c, x1, x2, psi, g, H11, H12);
+}
+
+/// The kernel: one directed pair per index.
+template <Formulation F, class Scatter>
+struct VolumePairFunctor {
+  static constexpr int Dim = F == Formulation::ThreeD ? 3 : 2;
+  VolumeMeshView mesh;
+  Kokkos::View<const VolumePair*> pairs;
+  Kokkos::View<const Real*, Kokkos::MemoryTraits<Kokkos::Unmanaged>> x;
+  InversePowerPair law;
+  bool withTangent;
+  Scatter scatter;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int k) const {
+    const VolumePair p = pairs(k);
+    CellPoints a, b;
+    cellPoints<Dim>(mesh, p.rowCell, p.order, x.data(), F == Formulation::Axisymmetric, a);
+    cellPoints<Dim>(mesh, p.colCell, p.order, x.data(), F == Formulation::Axisymmetric, b);
+    VolumeContribution c;
+    c.dim = Dim;
+    c.rowBody = mesh.cellBody(p.rowCell);
+    c.numRowNodes = a.numNodes;
+    c.numColNodes = a.numNodes + b.numNodes;
+    for (int n = 0; n < a.numNodes; ++n) c.colNodes[n] = c.rowNodes[n] = mesh.cellNodes(p.rowCell, n);
+    for (int n = 0; n < b.numNodes; ++n) c.colNodes[a.numNodes + n] = mesh.cellNodes(p.colCell, n);
+    const int nr = Dim * c.numRowNodes, nc = Dim * c.numColNodes;
+    for (int r = 0; r < nr; ++r) {
+      c.f[r] = 0.0;
+      if (withTangent)
+        for (int s = 0; s < nc; ++s) c.K[r][s] = 0.0;
+    }
+    Real energy = 0.0;
+    for (int i = 0; i < a.count; ++i) {
+      // sums over the column cell's points, weighted by W2: psi, d psi/dx1,
+      // d2 psi/dx1 dx1 and, per column node, N2 d2 psi/dx1 dx2
+      Real e = 0.0, g[3] = {}, H[3][3] = {}, C[kMaxCellNodes][3][3] = {};
+      for (int j = 0; j < b.count; ++j) {
+        Real psi, gj[3], H11[3][3] = {}, H12[3][3] = {};
+        pointPairLaw<F>(law, a.x[i], b.x[j], psi, gj, withTangent ? H11 : nullptr, H12);
+        const Real w = b.W[j];
+        e += w * psi;
+        for (int s = 0; s < Dim; ++s) g[s] += w * gj[s];
+        if (!withTangent) continue;
+        for (int s = 0; s < Dim; ++s)
+          for (int t = 0; t < Dim; ++t) H[s][t] += w * H11[s][t];
+        for (int n = 0; n < b.numNodes; ++n) {
+          const Real wn = w * b.N[j][n];
+          for (int s = 0; s < Dim; ++s)
+            for (int t = 0; t < Dim; ++t) C[n][s][t] += wn * H12[s][t];
+        }
+      }
+      const Real wi = a.W[i];
+      energy += wi * e;
+      for (int m = 0; m < a.numNodes; ++m) {
+        const Real wm = wi * a.N[i][m];
+        for (int s = 0; s < Dim; ++s) c.f[Dim * m + s] += wm * g[s];
+        if (!withTangent) continue;
+        for (int n = 0; n < a.numNodes; ++n) {
+          const Real wmn = wm * a.N[i][n];
+          for (int s = 0; s < Dim; ++s)
+            for (int t = 0; t < Dim; ++t) c.K[Dim * m + s][Dim * n + t] += wmn * H[s][t];
+        }
+        for (int n = 0; n < b.numNodes; ++n)
+          for (int s = 0; s < Dim; ++s)
+            for (int t = 0; t < Dim; ++t) c.K[Dim * m + s][Dim * (a.numNodes + n) + t] += wm * C[n][s][t];
+      }
+    }
+    c.energy = 0.5 * energy;
+    scatter(static_cast<const VolumeContribution&>(c), a.count * b.count);
+  }
+};
+
+}  // namespace detail
+
+class VolumeInteraction {
+ public:
+  /// mesh: every body's cells (Quad4 in 2D; Hex8, Tet4 in 3D); densities:
+  /// beta0 per body. Throws InputError for inconsistent arguments, cell
+  /// types the method does not handle, or a potential that is not of
+  /// inverse powers.
+  VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> densities,
+                    std::shared_ptr<const PairPotential> potential, VolumeInteractionOptions options = {});
+
+  const VolumeInteractionOptions& options() const { return options_; }
+  const PairPotential& potential() const { return *potential_; }
+  int numBodies() const { return numBodies_; }
+  int dim() const { return dim_; }
+  Real density(int body) const { return densities_[body]; }
+  /// Absolute cutoff and skin in use (scaled by the length scale).
+  Real cutoff() const { return cutoff1_ * lengthScale_; }
+  Real skin() const { return skin1_ * lengthScale_; }
+  int maxQuadratureOrder() const { return maxOrder_; }
+  /// The point-pair coefficients in use (strength and length scale applied).
+  InversePowerPair law() const;
+
+  /// Builds the pair list at `coords` (dim entries per node, mesh-wide) if
+  /// none exists, a node moved by more than skin / 2 since it was built, or
+  /// the cutoff changed; returns whether it did.
+  bool updatePairs(const Real* coords);
+  /// Forgets the pair list (the next updatePairs builds one).
+  void invalidatePairs() { built_ = false; }
+  const std::vector<VolumePair>& pairs() const { return pairs_; }
+
+  /// Evaluates every directed pair whose row cell has rowCellMask[cell] != 0
+  /// (all with an empty mask) at `coords` and calls
+  /// scatter(const VolumeContribution&, long pointPairs) for each, inside a
+  /// Kokkos::parallel_for. Fills summary().energy and the resultants.
+  template <class Scatter>
+  void evaluate(const Real* coords, Scatter scatter, bool withTangent, const std::vector<char>& rowCellMask = {});
+
+  /// The interaction energy of the current pair list at `coords` (all pairs).
+  Real energy(const Real* coords);
+
+  /// Sorted, unique (row node, column node) couplings of every directed pair
+  /// whose cells' bounding boxes are within `radius` at `coords`.
+  std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Real* coords, Real radius) const;
+
+  const VolumeInteractionSummary& summary() const { return summary_; }
+
+  /// Scales the potential's epsilon by `strength` > 0 (default 1).
+  void setStrength(Real strength);
+  Real strength() const { return strength_; }
+  /// Stretches the law by b > 0: r0 -> b r0, epsilon -> epsilon / b^3 (as
+  /// SurfaceInteraction::setLengthScale); the cutoff and skin scale with b.
+  void setLengthScale(Real b);
+  Real lengthScale() const { return lengthScale_; }
+
+ private:
+  /// Directed pairs of cells whose bounding boxes at `coords` are within
+  /// `radius` (with each pair's box gap and size).
+  struct Candidate {
+    LocalIndex rowCell, colCell;
+    Real gap, size;
+  };
+  std::vector<Candidate> candidates(const Real* coords, Real radius) const;
+  template <Formulation F, class Scatter>
+  void run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter, bool withTangent);
+
+  int dim_ = 2;
+  int numBodies_ = 0;
+  LocalIndex numNodes_ = 0;
+  std::vector<Real> densities_;
+  std::shared_ptr<const PairPotential> potential_;
+  InversePowerPair law1_;  ///< at strength 1, length scale 1
+  VolumeInteractionOptions options_;
+  int maxOrder_ = 0;
+  Real cutoff1_ = 0.0, skin1_ = 0.0;
+  Real strength_ = 1.0, lengthScale_ = 1.0;
+  std::vector<std::vector<LocalIndex>> cellsOfBody_;
+  std::vector<LocalIndex> interactingNodes_;  ///< nodes of cells of bodies that interact (sorted)
+  detail::VolumeMeshView view_;
+  std::vector<VolumePair> pairs_;
+  Kokkos::View<VolumePair*> pairsView_;
+  bool built_ = false;
+  Real builtCutoff_ = 0.0;
+  std::vector<Real> builtCoords_;  ///< coordinates of interactingNodes_ at the last build
+  VolumeInteractionSummary summary_;
+};
+
+template <Formulation F, class Scatter>
+void VolumeInteraction::run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter,
+                            bool withTangent) {
+  detail::VolumePairFunctor<F, Scatter> functor{
+      view_, pairs,
+      Kokkos::View<const Real*, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(coords, std::size_t(dim_) * numNodes_),
+      law(), withTangent, scatter};
+  Kokkos::parallel_for("cgcm::volume_pairs", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, pairs.extent(0)),
+                       functor);
+  Kokkos::fence();
+}
+
+template <class Scatter>
+void VolumeInteraction::evaluate(const Real* coords, Scatter scatter, bool withTangent,
+                                 const std::vector<char>& rowCellMask) {
+  Kokkos::View<const VolumePair*> selected = pairsView_;
+  if (!rowCellMask.empty()) {
+    std::size_t n = 0;
+    for (const VolumePair& p : pairs_) n += rowCellMask[p.rowCell] != 0;
+    Kokkos::View<VolumePair*> mine("cgcm::volume_pairs_owned", n);
+    n = 0;
+    for (const VolumePair& p : pairs_)
+      if (rowCellMask[p.rowCell]) mine(n++) = p;
+    selected = mine;
+  }
+  // energy, resultants and point-pair counts, accumulated atomically next to the caller's scatter
+  Kokkos::View<Real* [3]> resultant("cgcm::volume_resultant", numBodies_);
+  Kokkos::View<Real[1]> energy("cgcm::volume_energy");
+  Kokkos::View<long[1]> pointPairs("cgcm::volume_point_pairs");
+  const int dim = dim_;
+  auto wrapped = [=](const VolumeContribution& c, long np) {
+    Kokkos::atomic_add(&energy(0), c.energy);
+    Kokkos::atomic_add(&pointPairs(0), np);
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < dim; ++i) Kokkos::atomic_add(&resultant(c.rowBody, i), -c.f[dim * a + i]);
+    scatter(c, np);
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  if (options_.formulation == Formulation::ThreeD)
+    run<Formulation::ThreeD>(selected, coords, wrapped, withTangent);
+  else if (options_.formulation == Formulation::PlaneStrain)
+    run<Formulation::PlaneStrain>(selected, coords, wrapped, withTangent);
+  else
+    run<Formulation::Axisymmetric>(selected, coords, wrapped, withTangent);
+  summary_.energy = energy(0);
+  summary_.numPointPairs = pointPairs(0);
+  summary_.totalPointPairs += pointPairs(0);
+  summary_.kernelSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  summary_.resultant.assign(numBodies_, {0.0, 0.0, 0.0});
+  for (int b = 0; b < numBodies_; ++b)
+    for (int i = 0; i < dim; ++i) summary_.resultant[b][i] = resultant(b, i);
+}
+
+}  // namespace cgcm::interaction

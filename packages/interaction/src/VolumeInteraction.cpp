@@ -1,0 +1,225 @@
+#include "cgcm/interaction/VolumeInteraction.hpp"
+
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/Quadrature.hpp"
+
+namespace cgcm::interaction {
+
+InversePowerPair inversePowerForm(const PairPotential& potential) {
+  const Real eps = potential.epsilon(), r0 = potential.r0();
+  const Real r6 = std::pow(r0, 6);
+  if (potential.name() == "lennard-jones") return {eps * r6 * r6, 2.0 * eps * r6};
+  if (potential.name() == "repulsive") return {eps * r6 * r6, 0.0};
+  throw InputError("Interaction/Method = \"volume pair\" needs a potential of inverse powers r^-12, r^-6 "
+                   "(\"Lennard-Jones\" or \"repulsive\"), got \"" + potential.name() + "\"");
+}
+
+namespace {
+
+std::string where() { return "volume pair interaction: "; }
+
+}  // namespace
+
+VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> densities,
+                                     std::shared_ptr<const PairPotential> potential, VolumeInteractionOptions options)
+    : dim_(mesh.dim), numBodies_(mesh.numBodies), numNodes_(mesh.numNodes()), densities_(std::move(densities)),
+      potential_(std::move(potential)), options_(options) {
+  if (!potential_) throw InputError(where() + "no potential");
+  law1_ = inversePowerForm(*potential_);
+  if ((dim_ == 3) != (options_.formulation == Formulation::ThreeD))
+    throw InputError(where() + "a " + std::to_string(dim_) + "D mesh with the " +
+                     formulationName(options_.formulation) + " formulation");
+  if (int(densities_.size()) != numBodies_)
+    throw InputError(where() + std::to_string(densities_.size()) + " densities for " + std::to_string(numBodies_) +
+                     " bodies");
+  for (Real b : densities_)
+    if (!(b > 0.0) || !std::isfinite(b)) throw InputError(where() + "densities must be finite and > 0");
+  const int kernelMax = dim_ == 2 ? kMaxVolumeOrder2D : kMaxVolumeOrder3D;
+  maxOrder_ = options_.maxQuadratureOrder > 0 ? options_.maxQuadratureOrder : kernelMax;
+  if (options_.quadratureOrder < 1 || options_.quadratureOrder > maxOrder_ || maxOrder_ > kernelMax)
+    throw InputError(where() + "quadrature orders must satisfy 1 <= order (" +
+                     std::to_string(options_.quadratureOrder) + ") <= maximum order (" + std::to_string(maxOrder_) +
+                     ") <= " + std::to_string(kernelMax) + " in " + std::to_string(dim_) + "D");
+  if (std::isnan(options_.cutoff) || std::isnan(options_.skin) || std::isinf(options_.skin))
+    throw InputError(where() + "cutoff and skin must be numbers (the skin finite)");
+  cutoff1_ = options_.cutoff > 0.0 ? options_.cutoff : 10.0 * potential_->r0();
+  skin1_ = options_.skin > 0.0 ? options_.skin : potential_->r0();
+
+  // cells as plain arrays for the kernel
+  const LocalIndex numCells = mesh.numCells();
+  Kokkos::View<LocalIndex* [kMaxCellNodes]> cellNodes("cgcm::volume_cell_nodes", numCells);
+  Kokkos::View<int*> cellType("cgcm::volume_cell_type", numCells), cellBody("cgcm::volume_cell_body", numCells);
+  cellsOfBody_.assign(numBodies_, {});
+  std::vector<char> used(numNodes_, 0);
+  LocalIndex cell = 0;
+  for (const auto& block : mesh.blocks) {
+    const bool ok = dim_ == 2 ? block.type == mesh::CellType::Quad4
+                              : block.type == mesh::CellType::Hex8 || block.type == mesh::CellType::Tet4;
+    if (!ok)
+      throw InputError(where() + "block \"" + block.name + "\" has " + mesh::cellTypeName(block.type) +
+                       " cells; the method takes Quad4 in 2D, Hex8 and Tet4 in 3D");
+    const int nn = mesh::nodesPerCell(block.type);
+    for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
+      for (int a = 0; a < kMaxCellNodes; ++a) cellNodes(cell, a) = a < nn ? block.connectivity[std::size_t(c) * nn + a] : -1;
+      for (int a = 0; a < nn; ++a) used[cellNodes(cell, a)] = 1;
+      cellType(cell) = int(block.type);
+      cellBody(cell) = block.body;
+      cellsOfBody_.at(block.body).push_back(cell);
+    }
+  }
+  for (LocalIndex n = 0; n < numNodes_; ++n)
+    if (used[n]) interactingNodes_.push_back(n);
+  Kokkos::View<Real*> density("cgcm::volume_density", numBodies_);
+  for (int b = 0; b < numBodies_; ++b) density(b) = densities_[b];
+  Kokkos::View<Real*> ref("cgcm::volume_reference_coords", mesh.coords.size());
+  for (std::size_t i = 0; i < mesh.coords.size(); ++i) ref(i) = mesh.coords[i];
+  Kokkos::View<Real**> gp("cgcm::gauss_points", maxOrder_ + 1, maxOrder_), gw("cgcm::gauss_weights", maxOrder_ + 1,
+                                                                                maxOrder_);
+  for (int n = 1; n <= maxOrder_; ++n) {
+    const GaussRule rule = gaussLegendreUnit(n);
+    for (int i = 0; i < n; ++i) {
+      gp(n, i) = rule.points[i];
+      gw(n, i) = rule.weights[i];
+    }
+  }
+  view_ = detail::VolumeMeshView{cellNodes, cellType, cellBody, density, ref, gp, gw};
+  summary_.resultant.assign(numBodies_, {0.0, 0.0, 0.0});
+}
+
+InversePowerPair VolumeInteraction::law() const {
+  // r0 -> b r0, eps -> s eps / b^3: c12 ~ eps r0^12 -> s b^9 c12, c6 ~ eps r0^6 -> s b^3 c6
+  const Real b3 = lengthScale_ * lengthScale_ * lengthScale_;
+  return {strength_ * b3 * b3 * b3 * law1_.c12, strength_ * b3 * law1_.c6};
+}
+
+void VolumeInteraction::setStrength(Real strength) {
+  if (!(strength > 0.0) || !std::isfinite(strength))
+    throw InputError(where() + "strength must be finite and > 0, got " + std::to_string(strength));
+  strength_ = strength;
+}
+
+void VolumeInteraction::setLengthScale(Real b) {
+  if (!(b > 0.0) || !std::isfinite(b))
+    throw InputError(where() + "length scale must be finite and > 0, got " + std::to_string(b));
+  lengthScale_ = b;
+}
+
+std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Real* coords, Real radius) const {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, LocalIndex>;
+  // per body: each cell's current bounding box, grown by radius / 2 on every side
+  std::vector<std::vector<Box>> boxes(numBodies_);
+  std::vector<std::array<Real, 6>> bounds(view_.cellBody.extent(0));
+  for (int b = 0; b < numBodies_; ++b)
+    for (LocalIndex c : cellsOfBody_[b]) {
+      std::array<Real, 6>& bb = bounds[c];
+      for (int i = 0; i < 3; ++i) {
+        bb[i] = std::numeric_limits<Real>::max();
+        bb[3 + i] = -std::numeric_limits<Real>::max();
+      }
+      for (int a = 0; a < kMaxCellNodes && view_.cellNodes(c, a) >= 0; ++a)
+        for (int i = 0; i < dim_; ++i) {
+          const Real v = coords[std::size_t(dim_) * view_.cellNodes(c, a) + i];
+          bb[i] = std::min(bb[i], v);
+          bb[3 + i] = std::max(bb[3 + i], v);
+        }
+      if (dim_ == 2) bb[2] = bb[5] = 0.0;
+      double lo[3], hi[3];
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = bb[i] - 0.5 * radius;
+        hi[i] = bb[3 + i] + 0.5 * radius;
+      }
+      boxes[b].emplace_back(lo, hi, c);
+    }
+  std::vector<Candidate> out;
+  for (int k = 0; k < numBodies_; ++k)
+    for (int l = k + 1; l < numBodies_; ++l) {
+      if (boxes[k].empty() || boxes[l].empty()) continue;
+      auto report = [&](const Box& p, const Box& q) {
+        const std::array<Real, 6>&bp = bounds[p.info()], &bq = bounds[q.info()];
+        Real gap2 = 0.0, size2p = 0.0, size2q = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          const Real g = std::max({0.0, bp[i] - bq[3 + i], bq[i] - bp[3 + i]});
+          gap2 += g * g;
+          size2p += (bp[3 + i] - bp[i]) * (bp[3 + i] - bp[i]);
+          size2q += (bq[3 + i] - bq[i]) * (bq[3 + i] - bq[i]);
+        }
+        if (gap2 > radius * radius) return;  // the boxes' corners are farther apart
+        const Real gap = std::sqrt(gap2), size = std::sqrt(std::max(size2p, size2q));
+        out.push_back({p.info(), q.info(), gap, size});
+        out.push_back({q.info(), p.info(), gap, size});
+      };
+      // box_intersection_d reorders its inputs: work on copies
+      std::vector<Box> bk = boxes[k], bl = boxes[l];
+      CGAL::box_intersection_d(bk.begin(), bk.end(), bl.begin(), bl.end(), report);
+    }
+  std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+    return a.rowCell != b.rowCell ? a.rowCell < b.rowCell : a.colCell < b.colCell;
+  });
+  return out;
+}
+
+bool VolumeInteraction::updatePairs(const Real* coords) {
+  const Real cutoff = this->cutoff(), skin = this->skin();
+  if (built_ && builtCutoff_ == cutoff) {
+    Real moved2 = 0.0;
+    for (std::size_t k = 0; k < interactingNodes_.size(); ++k) {
+      Real d2 = 0.0;
+      for (int i = 0; i < dim_; ++i) {
+        const Real d = coords[std::size_t(dim_) * interactingNodes_[k] + i] - builtCoords_[dim_ * k + i];
+        d2 += d * d;
+      }
+      moved2 = std::max(moved2, d2);
+    }
+    if (std::sqrt(moved2) <= 0.5 * skin) return false;
+  }
+  const Real r0 = potential_->r0() * lengthScale_;
+  pairs_.clear();
+  summary_.maxOrderUsed = 0;
+  summary_.numAtMaxOrder = 0;
+  summary_.minCellGap = std::numeric_limits<Real>::infinity();
+  for (const Candidate& c : candidates(coords, cutoff + skin)) {
+    const int extra = int(std::ceil(c.size / std::max(c.gap, 0.5 * r0)));
+    const int order = std::min(maxOrder_, options_.quadratureOrder + extra);
+    pairs_.push_back({c.rowCell, c.colCell, order});
+    summary_.maxOrderUsed = std::max(summary_.maxOrderUsed, order);
+    summary_.numAtMaxOrder += order == maxOrder_;
+    summary_.minCellGap = std::min(summary_.minCellGap, c.gap);
+  }
+  pairsView_ = Kokkos::View<VolumePair*>("cgcm::volume_pairs", pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) pairsView_(k) = pairs_[k];
+  builtCoords_.resize(interactingNodes_.size() * dim_);
+  for (std::size_t k = 0; k < interactingNodes_.size(); ++k)
+    for (int i = 0; i < dim_; ++i) builtCoords_[dim_ * k + i] = coords[std::size_t(dim_) * interactingNodes_[k] + i];
+  built_ = true;
+  builtCutoff_ = cutoff;
+  summary_.cutoff = cutoff;
+  summary_.skin = skin;
+  summary_.numPairs = LocalIndex(pairs_.size());
+  ++summary_.numListBuilds;
+  return true;
+}
+
+Real VolumeInteraction::energy(const Real* coords) {
+  evaluate(coords, [](const VolumeContribution&, long) {}, false);
+  return summary_.energy;
+}
+
+std::vector<std::pair<LocalIndex, LocalIndex>> VolumeInteraction::couplings(const Real* coords, Real radius) const {
+  std::vector<std::pair<LocalIndex, LocalIndex>> out;
+  for (const Candidate& c : candidates(coords, radius))
+    for (int a = 0; a < kMaxCellNodes && view_.cellNodes(c.rowCell, a) >= 0; ++a)
+      for (int b = 0; b < kMaxCellNodes && view_.cellNodes(c.colCell, b) >= 0; ++b)
+        out.emplace_back(view_.cellNodes(c.rowCell, a), view_.cellNodes(c.colCell, b));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace cgcm::interaction
