@@ -7,6 +7,7 @@
 // potential, cutoff 10 r0, 4 Gauss points per segment. Reports the search
 // (pair list), the evaluation with and without tangent through the driver,
 // the bare kernel, and the same tangent by forward AD (Sacado) for scale.
+#include <Kokkos_Core.hpp>
 #include <Sacado.hpp>
 #include <chrono>
 #include <cmath>
@@ -47,6 +48,7 @@ mesh::Surface polyline(std::vector<Real>& coords, int n, Curve&& curve, int body
 }  // namespace
 
 int main(int argc, char** argv) {
+  Kokkos::ScopeGuard kokkos(argc, argv);  // the Method 3 driver runs its pairs through Kokkos
   const int n = argc > 1 ? std::atoi(argv[1]) : 4000;
   const int reps = argc > 2 ? std::atoi(argv[2]) : 20;
   const double smoothing = argc > 3 ? std::atof(argv[3]) : -1.0;  // < 0: the default

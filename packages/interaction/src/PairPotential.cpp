@@ -129,6 +129,16 @@ Real LennardJones::dphi(Real r) const {
   return -12.0 * epsilon() * (q6 * q6 - q6) / r;
 }
 
+InversePowerPair LennardJones::inversePowers() const {
+  const Real r6 = std::pow(r0(), 6);
+  return {epsilon() * r6 * r6, 2.0 * epsilon() * r6};
+}
+
+InversePowerPair RepulsiveLennardJones::inversePowers() const {
+  const Real r6 = std::pow(r0(), 6);
+  return {epsilon() * r6 * r6, 0.0};
+}
+
 Real LennardJones::halfSpace(Real r) const {
   const Real q = r0() / r;
   const Real q3 = q * q * q;

@@ -18,6 +18,7 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
       potential_(std::move(potential)),
       options_(options) {
   if (!potential_) throw InputError("surface interaction: no pair potential given");
+  powers_ = potential_->inversePowers();
   if (surfaces_.size() != densities_.size()) {
     std::ostringstream os;
     os << "surface interaction: " << surfaces_.size() << " surfaces but " << densities_.size()
@@ -106,7 +107,7 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
 Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real cutoff) {
   const Real w = potential.adhesionWorkCoefficient();
   if (!(w > 0.0) || !std::isfinite(cutoff)) return 0.0;
-  const SurfaceInteraction::Law unit{&potential, 1.0, taperStart, cutoff};
+  const SurfaceInteraction::Law unit{potential.inversePowers(), 1.0, taperStart, cutoff};
   auto removed = [&](Real r) {  // Phi/beta (1 - S)
     Real T, dT, Tc, dTc;
     potential.halfSpaceWithDerivative(r, T, dT);

@@ -12,15 +12,6 @@
 
 namespace cgcm::interaction {
 
-InversePowerPair inversePowerForm(const PairPotential& potential) {
-  const Real eps = potential.epsilon(), r0 = potential.r0();
-  const Real r6 = std::pow(r0, 6);
-  if (potential.name() == "lennard-jones") return {eps * r6 * r6, 2.0 * eps * r6};
-  if (potential.name() == "repulsive") return {eps * r6 * r6, 0.0};
-  throw InputError("Interaction/Method = \"volume pair\" needs a potential of inverse powers r^-12, r^-6 "
-                   "(\"Lennard-Jones\" or \"repulsive\"), got \"" + potential.name() + "\"");
-}
-
 namespace {
 
 std::string where() { return "volume pair interaction: "; }
@@ -32,7 +23,7 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
     : dim_(mesh.dim), numBodies_(mesh.numBodies), numNodes_(mesh.numNodes()), densities_(std::move(densities)),
       potential_(std::move(potential)), options_(options) {
   if (!potential_) throw InputError(where() + "no potential");
-  law1_ = inversePowerForm(*potential_);
+  law1_ = potential_->inversePowers();
   if ((dim_ == 3) != (options_.formulation == Formulation::ThreeD))
     throw InputError(where() + "a " + std::to_string(dim_) + "D mesh with the " +
                      formulationName(options_.formulation) + " formulation");

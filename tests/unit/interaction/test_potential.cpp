@@ -43,6 +43,7 @@ class MinimalLJ final : public PairPotential {
   Real dphi(Real r) const override { return lj_.dphi(r); }
   Real halfSpace(Real r) const override { return lj_.halfSpace(r); }
   Real dHalfSpace(Real r) const override { return lj_.dHalfSpace(r); }
+  InversePowerPair inversePowers() const override { return lj_.inversePowers(); }
 
  private:
   LennardJones lj_;
@@ -56,12 +57,29 @@ class MinimalRepulsive final : public PairPotential {
   Real dphi(Real r) const override { return p_.dphi(r); }
   Real halfSpace(Real r) const override { return p_.halfSpace(r); }
   Real dHalfSpace(Real r) const override { return p_.dHalfSpace(r); }
+  InversePowerPair inversePowers() const override { return p_.inversePowers(); }
 
  private:
   RepulsiveLennardJones p_;
 };
 
 }  // namespace
+
+TEST(InversePowerPair, IsThePotentialTheKernelsEvaluate) {
+  const LennardJones lj(0.7, 1.3);
+  const RepulsiveLennardJones rep(0.7, 1.3);
+  for (const PairPotential* p : {static_cast<const PairPotential*>(&lj), static_cast<const PairPotential*>(&rep)}) {
+    const InversePowerPair c = p->inversePowers();
+    for (Real r : {0.8, 1.1, 1.3, 2.0, 7.0}) {
+      EXPECT_NEAR(c.phi(r), p->phi(r), 1e-14 * std::abs(p->phi(r))) << p->name() << " r " << r;
+      Real v, d, vr, dr;
+      c.halfSpace(r, v, d);
+      p->halfSpaceWithDerivative(r, vr, dr);
+      EXPECT_NEAR(v, vr, 1e-14 * std::abs(vr)) << p->name() << " r " << r;
+      EXPECT_NEAR(d, dr, 1e-14 * std::abs(dr)) << p->name() << " r " << r;
+    }
+  }
+}
 
 TEST(Quadrature, GaussLegendreUnitIsExactForDegree2nMinus1) {
   for (int n = 1; n <= 12; ++n) {

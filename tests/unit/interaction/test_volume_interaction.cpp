@@ -415,9 +415,3 @@ TEST(VolumeInteraction, FlatBlocksReproduceTheHalfSpaceTraction) {
 
 }  // namespace
 }  // namespace cgcm::interaction
-
-int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
-}

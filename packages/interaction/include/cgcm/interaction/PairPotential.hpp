@@ -10,14 +10,19 @@
 //     T(r) = beta_k Phi_l(r) = beta_k beta_l halfSpace(r)
 // (reference densities), so T is the same for both bodies of a pair.
 //
-// Adding a potential = one new class implementing phi, dphi, halfSpace and
-// dHalfSpace. The surface properties (r_S0, work of adhesion, peak traction)
-// have numerical default implementations; closed forms override them.
+// The kernels of both methods evaluate a potential through its plain-data
+// form (inversePowers(): InversePowerPair.hpp, no virtual calls); this class
+// names it and gives the surface properties (r_S0, work of adhesion, peak
+// traction: numerical defaults, overridden by closed forms). A new potential
+// of inverse powers r^-12, r^-6 is one class here and one name in
+// makePotential; one of another form also needs its plain-data struct and
+// the kernels templated on it.
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "cgcm/core/Types.hpp"
+#include "cgcm/interaction/InversePowerPair.hpp"
 
 namespace cgcm::interaction {
 
@@ -28,6 +33,9 @@ class PairPotential {
   virtual ~PairPotential() = default;
 
   virtual std::string name() const = 0;
+
+  /// The coefficients of phi = c12 r^-12 - c6 r^-6, the form the kernels evaluate.
+  virtual InversePowerPair inversePowers() const = 0;
 
   Real epsilon() const { return epsilon_; }
   Real r0() const { return r0_; }
@@ -76,6 +84,7 @@ class LennardJones final : public PairPotential {
  public:
   LennardJones(Real epsilon, Real r0) : PairPotential(epsilon, r0) {}
   std::string name() const override { return "lennard-jones"; }
+  InversePowerPair inversePowers() const override;
   Real phi(Real r) const override;
   Real dphi(Real r) const override;
   Real halfSpace(Real r) const override;
@@ -98,6 +107,7 @@ class RepulsiveLennardJones final : public PairPotential {
  public:
   RepulsiveLennardJones(Real epsilon, Real r0) : PairPotential(epsilon, r0) {}
   std::string name() const override { return "repulsive"; }
+  InversePowerPair inversePowers() const override;
   Real phi(Real r) const override;
   Real dphi(Real r) const override;
   Real halfSpace(Real r) const override;

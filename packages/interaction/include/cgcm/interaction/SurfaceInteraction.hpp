@@ -49,6 +49,8 @@
 // the tangent includes dw_s = (w_s/delta)(-drho_s + sum_t w_t drho_t).
 // Candidates are the segments with rho_s <= rho_min + c delta
 // (c = kSmoothingRange), at most kMaxBlendTargets of them (lowest rho).
+#include <Kokkos_Core.hpp>
+
 #include <array>
 #include <memory>
 #include <utility>
@@ -225,18 +227,35 @@ class SurfaceInteraction {
   }
 
   /// Scatter form: calls scatter(const PairContribution&) for every pair p
-  /// with include(p) (e.g. the pairs this rank owns); the summary's
+  /// with include(p) (e.g. the pairs this rank owns), inside a
+  /// Kokkos::parallel_for over the pairs (scatter must be safe to call
+  /// concurrently where Kokkos runs threads: atomic adds); the summary's
   /// resultants and counts are those of these pairs.
   template <class Scatter, class Include>
   void evaluate(const Real* coords, Scatter&& scatter, bool withTangent, Include&& include) {
     beginEvaluation();
-    PairContribution c;
-    for (const InteractionPair& p : pairs_) {
-      if (!include(p)) continue;
-      const PairState st = evaluatePair(coords, p, c, withTangent);
-      accumulate(p, st, c);
-      scatter(static_cast<const PairContribution&>(c));
-    }
+    Kokkos::View<Real* [3], Kokkos::HostSpace> resultant("cgcm::surface_resultant", surfaces_.size());
+    Kokkos::View<Real[1], Kokkos::HostSpace> minDistance("cgcm::surface_min_distance");
+    Kokkos::View<LocalIndex[1], Kokkos::HostSpace> vertices("cgcm::surface_vertex_projections");
+    minDistance(0) = summary_.minDistance;
+    Kokkos::parallel_for(
+        "cgcm::method3_pairs", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, pairs_.size()),
+        [&](const std::size_t k) {
+          const InteractionPair& p = pairs_[k];
+          if (!include(p)) return;
+          PairContribution c;
+          const PairState st = evaluatePair(coords, p, c, withTangent);
+          for (int a = 0; a < c.numRowNodes; ++a)
+            for (int i = 0; i < c.dim; ++i) Kokkos::atomic_add(&resultant(p.body, i), -c.f[c.dim * a + i]);
+          Kokkos::atomic_fetch_min(&minDistance(0), st.distance);
+          if (st.region != 0) Kokkos::atomic_add(&vertices(0), LocalIndex(1));
+          scatter(static_cast<const PairContribution&>(c));
+        });
+    Kokkos::fence();
+    for (std::size_t b = 0; b < surfaces_.size(); ++b)
+      for (int i = 0; i < 3; ++i) summary_.resultant[b][i] = resultant(b, i);
+    summary_.minDistance = minDistance(0);
+    summary_.numVertexProjections = vertices(0);
   }
   template <class Scatter>
   void evaluate(const Real* coords, Scatter&& scatter, bool withTangent = true) {
@@ -264,13 +283,13 @@ class SurfaceInteraction {
   /// s = (r - taperStart)/(cutoff - taperStart) up to the cutoff, 0 beyond
   /// (taperStart and cutoff are absolute, i.e. already scaled by b).
   struct Law {
-    const PairPotential* potential;
+    InversePowerPair potential;  ///< at length scale 1 (plain data: no virtual call per pair)
     Real betaProduct;
     Real taperStart;
     Real cutoff;
     Real lengthScale = 1.0;  ///< b
-    void operator()(Real r, Real& T, Real& dT) const {
-      potential->halfSpaceWithDerivative(r / lengthScale, T, dT);
+    KOKKOS_INLINE_FUNCTION void operator()(Real r, Real& T, Real& dT) const {
+      potential.halfSpace(r / lengthScale, T, dT);
       T *= betaProduct;
       dT *= betaProduct / lengthScale;
       if (r >= cutoff) {
@@ -286,7 +305,7 @@ class SurfaceInteraction {
   };
   /// The law between bodies k and l.
   Law law(int k, int l) const {
-    return Law{potential_.get(), strength_ * densities_[k] * densities_[l], taperStart_, cutoff_, lengthScale_};
+    return Law{powers_, strength_ * densities_[k] * densities_[l], taperStart_, cutoff_, lengthScale_};
   }
 
   /// Scales every traction by `strength` > 0 (the potential's epsilon times
@@ -327,6 +346,7 @@ class SurfaceInteraction {
   int dim_ = 2;
   std::vector<Real> densities_;
   std::shared_ptr<const PairPotential> potential_;
+  InversePowerPair powers_;  ///< potential_'s plain-data form
   SurfaceInteractionOptions options_;
   GaussRule rule_;
   Real cutoff1_ = 0.0, taperStart1_ = 0.0, smoothing1_ = 0.0;  ///< at length scale 1

@@ -113,10 +113,6 @@ struct VolumeInteractionSummary {
   std::vector<std::array<Real, 3>> resultant;
 };
 
-/// c12, c6 of a potential of inverse powers (Lennard-Jones: eps r0^12, 2 eps r0^6;
-/// repulsive: eps r0^12, 0). Throws InputError for other potentials.
-InversePowerPair inversePowerForm(const PairPotential& potential);
-
 namespace detail {
 
 /// Quadrature points of one cell at the current coordinates.
@@ -335,9 +331,8 @@ struct VolumePairFunctor {
 class VolumeInteraction {
  public:
   /// mesh: every body's cells (Quad4 in 2D; Hex8, Tet4 in 3D); densities:
-  /// beta0 per body. Throws InputError for inconsistent arguments, cell
-  /// types the method does not handle, or a potential that is not of
-  /// inverse powers.
+  /// beta0 per body. Throws InputError for inconsistent arguments or cell
+  /// types the method does not handle.
   VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> densities,
                     std::shared_ptr<const PairPotential> potential, VolumeInteractionOptions options = {});
 

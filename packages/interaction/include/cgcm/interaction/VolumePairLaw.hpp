@@ -35,14 +35,9 @@
 #include <cmath>
 
 #include "cgcm/core/Types.hpp"
+#include "cgcm/interaction/InversePowerPair.hpp"
 
 namespace cgcm::interaction {
-
-/// phi(r) = c12 r^-12 - c6 r^-6 (plain data: usable inside kernels).
-struct InversePowerPair {
-  Real c12 = 0.0;
-  Real c6 = 0.0;
-};
 
 /// Radial law psi(s) = a s^-alpha - b s^-beta of s = |x1 - x2|^2 in `Dim`
 /// dimensions (3D: the potential itself; plane strain: its line integral),
