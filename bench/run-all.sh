@@ -25,5 +25,7 @@ tail -2 output/bench-3d-sphere/summary.txt
 "$build/bin/cgcm" inputs/3d/three-spheres.xml Output/Directory=output/bench-3d-three-spheres "Output/Print Steps=false" \
   "Loading/Approach Path={0.03,0.041,0.034}"
 tail -2 output/bench-3d-three-spheres/summary.txt
+echo "== Method 1 (volume pairs): kernel throughput on one and two ranks"
+bash bench/method1.sh "$build"
 echo "== a path through folds: displacement against arc-length control"
 bash bench/continuation.sh "$build"
