@@ -57,10 +57,17 @@ sphere-3d: build
 	/usr/bin/python3 tests/tools/check_load_curve.py stiffness $(SPHERE3D_OUT)/load_curve.csv \
 	  --from 0.05 --to 0.06 --expected 0.2616 --tolerance 0.02
 
-# Method 1 (volume pairs) against Method 3 on the benchmark for gammaL = 50,
-# 20, 200, 5, 2 (output/validation/method-study/table.csv; doc/validation.md).
+# Method 1 (volume pairs) against Method 3 on the benchmark: gammaL = 50, 200,
+# 20 with cells of 1.25 r0 at the surfaces, Method 1 again on a contact zone
+# half as wide and on the next mesh level (every cell halved); gammaL = 5, 2 (whole bodies within 10 r0) with a 5 r0 cutoff on the
+# approach to P_min, and gammaL = 50 the same for the cutoff's effect
+# (output/validation/method-study/table.csv; doc/validation.md; about an hour).
 method-study: build
-	@bash tools/run_method_study.sh $(BUILD_DIR)
+	@bash tools/run_method_study.sh $(BUILD_DIR) 50 200 20
+	@ZONE_FACTOR=12.5 METHODS="volume pair" bash tools/run_method_study.sh $(BUILD_DIR) 200 50 20
+	@LEVEL=1 METHODS="volume pair" bash tools/run_method_study.sh $(BUILD_DIR) 200 50
+	@CUTOFF=5 APPROACH=-1,0.5 bash tools/run_method_study.sh $(BUILD_DIR) 50 5 2
+	/usr/bin/python3 tools/plot_method_study.py output/validation/method-study --output doc/figures/method1-vs-method3.png
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

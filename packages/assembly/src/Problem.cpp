@@ -120,7 +120,7 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
   }
   if (globalCounts[2] > 0)
     throw NumericalError(interactionFailure.empty()
-                             ? "surface interaction: the surfaces touch or interpenetrate (found on another rank)"
+                             ? "interaction: the bodies touch or interpenetrate (found on another rank)"
                              : interactionFailure);
   if (globalCounts[0] > 0)
     throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0)");

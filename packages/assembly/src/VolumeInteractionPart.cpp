@@ -1,6 +1,7 @@
 #include "cgcm/assembly/VolumeInteractionPart.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "cgcm/core/Error.hpp"
@@ -36,7 +37,7 @@ VolumeInteractionPart::VolumeInteractionPart(Teuchos::RCP<const DofMap> dofs, co
     for (int i = 0; i < dim; ++i) rowIds_(n, i) = overlap.getLocalElement(dofs_->dof(n, i));
 }
 
-int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& /*failure*/) {
+int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& failure) {
   const std::vector<Real>& x = coords_.update(u);
   const auto t0 = std::chrono::steady_clock::now();
   interaction_->updatePairs(x.data());
@@ -52,11 +53,19 @@ int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matri
       for (int i = 0; i < dim; ++i) colIds(n, i) = colMap.getLocalElement(dofs_->dof(LocalIndex(n), i));
   }
   Kokkos::View<int[1]> dropped("cgcm::volume_dropped");
+  Kokkos::View<LocalIndex[2]> nonFinite("cgcm::volume_non_finite");  // the first pair's cells + 1, 0: none
   const auto rowIds = rowIds_;
   const bool withTangent = J != nullptr;
   auto scatter = [=](const interaction::VolumeContribution& c, long) {
     LocalIndex rows[3 * interaction::kMaxCellNodes], cols[6 * interaction::kMaxCellNodes];
     const int nr = dim * c.numRowNodes, nc = dim * c.numColNodes;
+    bool finite = true;
+    for (int r = 0; r < nr; ++r) finite = finite && std::isfinite(c.f[r]);
+    if (!finite) {  // coincident quadrature points: interpenetrating bodies
+      if (Kokkos::atomic_compare_exchange(&nonFinite(0), LocalIndex(0), c.rowNodes[0] + 1) == 0)
+        nonFinite(1) = c.colNodes[c.numRowNodes] + 1;
+      return;
+    }
     for (int a = 0; a < c.numRowNodes; ++a)
       for (int i = 0; i < dim; ++i) rows[dim * a + i] = rowIds(c.rowNodes[a], i);
     for (int r = 0; r < nr; ++r) Kokkos::atomic_add(&fv(rows[r], 0), c.f[r]);
@@ -69,6 +78,10 @@ int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matri
     if (missing) Kokkos::atomic_add(&dropped(0), missing);
   };
   interaction_->evaluate(x.data(), scatter, withTangent, ownsCell_);
+  if (nonFinite(0) > 0)
+    failure = "volume pair interaction: a non-finite force between the cells of nodes " +
+              std::to_string(nonFinite(0) - 1) + " and " + std::to_string(nonFinite(1) - 1) +
+              " (their quadrature points coincide: the bodies interpenetrate)";
   return dropped(0);
 }
 
