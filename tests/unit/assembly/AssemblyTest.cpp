@@ -118,6 +118,22 @@ TEST(BulkPart, TangentAndOneMaterialPerBody) {
   EXPECT_LT(err, 1e-6);
 }
 
+// The interaction part's share of f (full - bulk), summed per body, is minus
+// the force on the body (to the round-off of the larger of the two).
+void expectForcesAreTheInteractionShare(const mesh::Mesh& m, const std::vector<Real>& fb, const std::vector<Real>& ff,
+                                        const std::vector<std::array<Real, 3>>& forces) {
+  std::vector<int> nodeBody(m.numNodes());
+  for (const auto& b : m.blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
+  Real sum[2][3] = {}, scale = 0.0;
+  for (std::size_t i = 0; i < ff.size(); ++i) {
+    sum[nodeBody[i / 3]][i % 3] += ff[i] - fb[i];
+    scale = std::max({scale, std::abs(ff[i]), std::abs(fb[i])});
+  }
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[b][i], -sum[b][i], 1e-12 * scale);
+}
+
 std::shared_ptr<interaction::SurfaceInteraction> methodThree(const mesh::Mesh& m) {
   interaction::SurfaceInteractionOptions o;
   o.formulation = interaction::Formulation::ThreeD;
@@ -150,19 +166,9 @@ TEST(InteractionPart, CoupledTangentAndForcesOnTheBodies) {
   EXPECT_TRUE(full.updateInteractionGraph(uv));
   EXPECT_TRUE(full.interactionGraphCovers(uv, full.searchRadius()));
   const auto fb = residual(bulk, u), ff = residual(full, u);
-  // the interaction part's share of f, summed per body, is minus the force on the body
   const auto forces = full.interactionForces();
   ASSERT_EQ(forces.size(), 2u);
-  std::vector<int> nodeBody(m->numNodes());
-  for (const auto& b : m->blocks)
-    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
-  Real sum[2][3] = {}, scale = 0.0;  // round-off of f - f_bulk: that of the larger of the two
-  for (std::size_t i = 0; i < ff.size(); ++i) {
-    sum[nodeBody[i / 3]][i % 3] += ff[i] - fb[i];
-    scale = std::max({scale, std::abs(ff[i]), std::abs(fb[i])});
-  }
-  for (int b = 0; b < 2; ++b)
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[b][i], -sum[b][i], 1e-12 * scale);
+  expectForcesAreTheInteractionShare(*m, fb, ff, forces);
   EXPECT_GT(forces[0][2], 0.0);  // the bodies attract: the lower one is pulled up
   EXPECT_LT(forces[1][2], 0.0);
   const Real err = tangentError(full, u, 1e-6);
@@ -196,16 +202,7 @@ TEST(VolumeInteractionPart, CoupledTangentAndBalancedForces) {
   const auto fb = residual(bulk, u), ff = residual(full, u);
   const auto forces = full.interactionForces();
   ASSERT_EQ(forces.size(), 2u);
-  std::vector<int> nodeBody(m->numNodes());
-  for (const auto& b : m->blocks)
-    for (LocalIndex n : b.connectivity) nodeBody[n] = b.body;
-  Real sum[2][3] = {}, scale = 0.0;
-  for (std::size_t i = 0; i < ff.size(); ++i) {
-    sum[nodeBody[i / 3]][i % 3] += ff[i] - fb[i];
-    scale = std::max({scale, std::abs(ff[i]), std::abs(fb[i])});
-  }
-  for (int b = 0; b < 2; ++b)
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[b][i], -sum[b][i], 1e-12 * scale);
+  expectForcesAreTheInteractionShare(*m, fb, ff, forces);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(forces[0][i] + forces[1][i], 0.0, 1e-13 * std::abs(forces[0][2]));
   EXPECT_GT(forces[0][2], 0.0);  // the bodies attract
   const Real err = tangentError(full, u, 1e-6);
