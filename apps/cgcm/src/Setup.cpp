@@ -341,13 +341,22 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
     << phys.epsilon << ", beta0 = " << beta0;
   report.push_back(o.str());
   o.str("");
-  o << "potential " << s.potential->name() << ": r_S0 = " << rS0 << ", w = " << w << ", sigma_max = " << sigmaMax
-    << ", cutoff = " << s.options.cutoff << " (taper from " << taperStart << "), |T(taper start)|/sigma_max = "
-    << std::abs(s.potential->traction(taperStart, beta0, beta0)) / sigmaMax << ", work removed by the cutoff = "
+  // the potential's own surface properties (a repulsive one has no r_S0 and w = 0)
+  const auto ownRS0 = s.potential->surfaceEquilibriumDistance();
+  o << "potential " << s.potential->name() << ": r_S0 = ";
+  if (ownRS0)
+    o << *ownRS0;
+  else
+    o << "none";
+  o << ", w = " << s.potential->workOfAdhesion(beta0, beta0)
+    << ", sigma_max = " << s.potential->peakTraction(beta0, beta0) << ", cutoff = " << s.options.cutoff
+    << " (taper from " << taperStart << "), |T(taper start)| = "
+    << std::abs(s.potential->traction(taperStart, beta0, beta0)) / sigmaMax
+    << " sigma_max(Lennard-Jones), work removed by the cutoff = "
     << 100.0 * interaction::neglectedWorkFraction(*s.potential, taperStart, s.options.cutoff) << " % of w";
   report.push_back(o.str());
   o.str("");
-  o << "Lennard-Jones scales: Tabor mu = " << tabor << ", Maugis-Dugdale lambda (theory) = " << lambda
+  o << "Lennard-Jones scales (of its r0 and epsilon, whatever the potential): Tabor mu = " << tabor << ", Maugis-Dugdale lambda (theory) = " << lambda
     << ", 2 pi w R = " << 2 * M_PI * w * reducedRadius << ", 1.5 pi w R = " << 1.5 * M_PI * w * reducedRadius
     << " (R = " << reducedRadius << ")";
   report.push_back(o.str());
