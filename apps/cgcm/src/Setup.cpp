@@ -33,6 +33,10 @@ RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) 
   return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
 }
 
+RCP<Teuchos::StringValidator> choices(const std::vector<std::string>& names) {
+  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
+}
+
 RCP<Teuchos::EnhancedNumberValidator<double>> atLeast(double min) {
   auto v = rcp(new Teuchos::EnhancedNumberValidator<double>());
   v->setMin(min);
@@ -156,9 +160,15 @@ RCP<const ParameterList> validParameters() {
 
   auto& inter = valid->sublist("Interaction", false,
                                 "Lennard-Jones interaction between the bodies (sphere geometries), THEORY sections 2, 4");
-  inter.set("Potential", "Lennard-Jones",
-            "\"Lennard-Jones\" (adhesion and repulsion) or \"repulsive\" (its r^-12 part only: a smooth barrier)",
-            choices({"Lennard-Jones", "repulsive"}));
+  {
+    std::vector<std::string> names;
+    std::string help;
+    for (const auto& e : interaction::potentialRegistry()) {
+      names.push_back(e.deckName);
+      help += std::string(help.empty() ? "" : "; ") + "\"" + e.deckName + "\": " + e.description;
+    }
+    inter.set("Potential", names.front(), help, choices(names));
+  }
   inter.set("Method", "half-space point",
             "\"half-space point\" (Method 3: each surface point against the other body as a half-space) or "
             "\"volume pair\" (Method 1: quadrature over pairs of cells of two bodies, the reference; cost grows "
@@ -284,8 +294,7 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   }
   const auto phys = interaction::fromScaling(gammaL, gammaW, R0, Y, beta0);
   InteractionSetup s;
-  const std::string potentialName = in.get<std::string>("Potential") == "repulsive" ? "repulsive" : "lennard-jones";
-  s.potential = interaction::makePotential(potentialName, phys.epsilon, phys.r0);
+  s.potential = interaction::makePotential(in.get<std::string>("Potential"), phys.epsilon, phys.r0);
   s.densities = {beta0, beta0};
   s.options.formulation = formulation == assembly::Formulation::Axisymmetric ? interaction::Formulation::Axisymmetric
                           : formulation == assembly::Formulation::ThreeD     ? interaction::Formulation::ThreeD

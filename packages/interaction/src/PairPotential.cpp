@@ -1,5 +1,7 @@
 #include "cgcm/interaction/PairPotential.hpp"
 
+#include <cctype>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -216,10 +218,30 @@ void RepulsiveLennardJones::halfSpaceWithDerivative(Real r, Real& value, Real& d
 
 // ---------------------------------------------------------------------------
 
+const std::vector<PotentialEntry>& potentialRegistry() {
+  static const std::vector<PotentialEntry> entries = {
+      {"Lennard-Jones", "adhesion and repulsion",
+       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> { return std::make_shared<LennardJones>(eps, r0); }},
+      {"repulsive", "its r^-12 part only: a smooth barrier",
+       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
+         return std::make_shared<RepulsiveLennardJones>(eps, r0);
+       }},
+  };
+  return entries;
+}
+
 std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0) {
-  if (name == "lennard-jones" || name == "lj") return std::make_shared<LennardJones>(epsilon, r0);
-  if (name == "repulsive") return std::make_shared<RepulsiveLennardJones>(epsilon, r0);
-  throw InputError("pair potential: unknown name '" + name + "' (allowed: lennard-jones, lj, repulsive)");
+  auto lower = [](std::string t) {
+    for (char& c : t) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
+  const std::string wanted = lower(name) == "lj" ? "lennard-jones" : lower(name);
+  std::string allowed;
+  for (const PotentialEntry& e : potentialRegistry()) {
+    if (lower(e.deckName) == wanted) return e.make(epsilon, r0);
+    allowed += std::string(allowed.empty() ? "" : ", ") + "\"" + e.deckName + "\"";
+  }
+  throw InputError("pair potential: unknown name \"" + name + "\" (allowed: " + allowed + ")");
 }
 
 }  // namespace cgcm::interaction

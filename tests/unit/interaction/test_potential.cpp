@@ -211,6 +211,9 @@ TEST(PairPotential, FactoryAndValidation) {
   EXPECT_EQ(makePotential("lj", 1.0, 1.0)->name(), "lennard-jones");
   EXPECT_EQ(makePotential("repulsive", 1.0, 1.0)->name(), "repulsive");
   EXPECT_THROW(makePotential("morse", 1.0, 1.0), InputError);
+  // every potential a deck can name is made by its deck name
+  for (const auto& e : potentialRegistry()) EXPECT_NE(makePotential(e.deckName, 1.0, 1.0), nullptr) << e.deckName;
+  EXPECT_EQ(makePotential("Lennard-Jones", 1.0, 1.0)->name(), "lennard-jones");
   EXPECT_THROW(LennardJones(0.0, 1.0), InputError);
   EXPECT_THROW(LennardJones(1.0, -1.0), InputError);
 }

@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cgcm/core/Types.hpp"
 #include "cgcm/interaction/InversePowerPair.hpp"
@@ -118,8 +119,17 @@ class RepulsiveLennardJones final : public PairPotential {
   Real peakTractionCoefficient() const override { return 0.0; }
 };
 
-/// Factory by name: "lennard-jones" (alias "lj") or "repulsive".
-/// Throws InputError naming the allowed values.
+/// The potentials a deck can name, in one place: a new potential is its class
+/// above and one entry here (the deck's choices and their help follow).
+struct PotentialEntry {
+  const char* deckName;     ///< Interaction/Potential value
+  const char* description;  ///< for the deck's help
+  std::shared_ptr<const PairPotential> (*make)(Real epsilon, Real r0);
+};
+const std::vector<PotentialEntry>& potentialRegistry();
+
+/// Factory by deck name, case-insensitive (the deck names lower-cased are the
+/// potentials' name(); "lj" also works). Throws InputError naming the allowed values.
 std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0);
 
 }  // namespace cgcm::interaction
