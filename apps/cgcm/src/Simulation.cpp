@@ -256,15 +256,21 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   result.graphSeconds = t.graph - timingsBefore.graph;
   if (const auto* volume = problem->volumeInteraction()) {
     const auto& vs = volume->summary();
-    long pointPairs = 0, totalPairs = 0;  // of the last evaluation and of all, over all ranks
+    // each rank lists the pairs of its own cells: sums over the ranks
+    LocalIndex numPairs = 0, atMax = 0;
+    int maxOrder = 0;
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_MAX, vs.maxOrderUsed, Teuchos::outArg(maxOrder));
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numPairs, Teuchos::outArg(numPairs));
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numAtMaxOrder, Teuchos::outArg(atMax));
+    long pointPairs = 0, totalPairs = 0;  // of the last evaluation and of all
     double kernelSeconds = 0.0;           // the slowest rank's
     Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numPointPairs, Teuchos::outArg(pointPairs));
     Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.totalPointPairs, Teuchos::outArg(totalPairs));
     Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_MAX, vs.kernelSeconds, Teuchos::outArg(kernelSeconds));
     std::ostringstream o;
-    o << "volume pairs (Method 1): " << vs.numPairs << " directed cell pairs within cutoff + skin = "
+    o << "volume pairs (Method 1): " << numPairs << " directed cell pairs within cutoff + skin = "
       << vs.cutoff + vs.skin << ", " << pointPairs << " quadrature-point pairs per evaluation, quadrature orders up to "
-      << vs.maxOrderUsed << " (" << vs.numAtMaxOrder << " pairs at the maximum " << volume->maxQuadratureOrder()
+      << maxOrder << " (" << atMax << " pairs at the maximum " << volume->maxQuadratureOrder()
       << "), " << vs.numListBuilds << " pair lists built; kernel " << kernelSeconds << " s for " << totalPairs
       << " point pairs (" << 1e-6 * double(totalPairs) / std::max(kernelSeconds, 1e-300) << " M/s)";
     result.volumePairs = o.str();

@@ -27,9 +27,11 @@ VolumeInteractionPart::VolumeInteractionPart(Teuchos::RCP<const DofMap> dofs, co
   if (!(searchRadiusFactor > 1.0))
     throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +
                      ": the graph search radius must exceed the interaction cutoff (factor > 1)");
+  // this rank lists and evaluates the pairs whose row cell it owns
   const int rank = dofs_->comm()->getRank();
-  ownsCell_.resize(mesh.numCells());
-  for (LocalIndex c = 0; c < mesh.numCells(); ++c) ownsCell_[c] = dofs_->cellOwner(c) == rank;
+  std::vector<char> owns(mesh.numCells());
+  for (LocalIndex c = 0; c < mesh.numCells(); ++c) owns[c] = dofs_->cellOwner(c) == rank;
+  interaction_->setRowCells(std::move(owns));
   const int dim = dofs_->dofsPerNode();
   const Map& overlap = *dofs_->overlapMap();
   rowIds_ = Kokkos::View<LocalIndex**>("cgcm::volume_row_ids", mesh.numNodes(), dim);
@@ -44,14 +46,17 @@ int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matri
   searchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int dim = dofs_->dofsPerNode();
   Matrix::local_matrix_device_type lclJ;
-  Kokkos::View<LocalIndex**> colIds;
   if (J) {
     lclJ = J->getLocalMatrixDevice();
-    const Map& colMap = *J->getColMap();
-    colIds = Kokkos::View<LocalIndex**>("cgcm::volume_col_ids", rowIds_.extent(0), dim);
-    for (std::size_t n = 0; n < rowIds_.extent(0); ++n)
-      for (int i = 0; i < dim; ++i) colIds(n, i) = colMap.getLocalElement(dofs_->dof(LocalIndex(n), i));
+    if (J->getColMap().get() != colMapOfIds_.get()) {  // a new graph: its column ids, once
+      const Map& colMap = *J->getColMap();
+      colIds_ = Kokkos::View<LocalIndex**>("cgcm::volume_col_ids", rowIds_.extent(0), dim);
+      for (std::size_t n = 0; n < rowIds_.extent(0); ++n)
+        for (int i = 0; i < dim; ++i) colIds_(n, i) = colMap.getLocalElement(dofs_->dof(LocalIndex(n), i));
+      colMapOfIds_ = J->getColMap();
+    }
   }
+  const auto colIds = colIds_;
   Kokkos::View<int[1]> dropped("cgcm::volume_dropped");
   Kokkos::View<LocalIndex[2]> nonFinite("cgcm::volume_non_finite");  // the first pair's cells + 1, 0: none
   const auto rowIds = rowIds_;
@@ -77,7 +82,7 @@ int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matri
     for (int r = 0; r < nr; ++r) missing += nc - lclJ.sumIntoValues(rows[r], cols, nc, c.K[r], false, true);
     if (missing) Kokkos::atomic_add(&dropped(0), missing);
   };
-  interaction_->evaluate(x.data(), scatter, withTangent, ownsCell_);
+  interaction_->evaluate(x.data(), scatter, withTangent);
   if (nonFinite(0) > 0)
     failure = "volume pair interaction: a non-finite force between the cells of nodes " +
               std::to_string(nonFinite(0) - 1) + " and " + std::to_string(nonFinite(1) - 1) +

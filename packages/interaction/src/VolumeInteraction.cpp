@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "cgcm/core/Error.hpp"
@@ -156,6 +157,13 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
   return out;
 }
 
+void VolumeInteraction::setRowCells(std::vector<char> rowCells) {
+  if (!rowCells.empty() && rowCells.size() != view_.cellBody.extent(0))
+    throw std::logic_error("volume pair interaction: a row-cell mask of the wrong size");
+  rowCells_ = std::move(rowCells);
+  built_ = false;
+}
+
 bool VolumeInteraction::updatePairs(const Real* coords) {
   const Real cutoff = this->cutoff(), skin = this->skin();
   if (built_ && builtCutoff_ == cutoff) {
@@ -175,12 +183,18 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
   summary_.maxOrderUsed = 0;
   summary_.numAtMaxOrder = 0;
   summary_.minCellGap = std::numeric_limits<Real>::infinity();
+  const int tet = int(mesh::CellType::Tet4);
   for (const Candidate& c : candidates(coords, cutoff + skin)) {
+    if (!rowCells_.empty() && !rowCells_[c.rowCell]) continue;
     const int extra = int(std::ceil(c.size / std::max(c.gap, 0.5 * r0)));
-    const int order = std::min(maxOrder_, options_.quadratureOrder + extra);
+    // a tetrahedron's rule holds kMaxTetOrder^3 points on each of its four hexahedra
+    const int cap = view_.cellType(c.rowCell) == tet || view_.cellType(c.colCell) == tet
+                        ? std::min(maxOrder_, kMaxTetOrder)
+                        : maxOrder_;
+    const int order = std::min(cap, options_.quadratureOrder + extra);
     pairs_.push_back({c.rowCell, c.colCell, order});
     summary_.maxOrderUsed = std::max(summary_.maxOrderUsed, order);
-    summary_.numAtMaxOrder += order == maxOrder_;
+    summary_.numAtMaxOrder += order == cap;
     summary_.minCellGap = std::min(summary_.minCellGap, c.gap);
   }
   pairsView_ = Kokkos::View<VolumePair*>("cgcm::volume_pairs", pairs_.size());
@@ -198,7 +212,7 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
 }
 
 Real VolumeInteraction::energy(const Real* coords) {
-  evaluate(coords, [](const VolumeContribution&, long) {}, false);
+  evaluate(coords, [](const VolumeContribution&, long) {}, false);  // the listed pairs: all without row cells set
   return summary_.energy;
 }
 

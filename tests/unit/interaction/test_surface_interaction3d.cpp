@@ -70,13 +70,20 @@ Scene capOverFlat(bool flatTriangles) {
   return sc;
 }
 
-SurfaceInteraction makeInteraction(const Scene& sc, SearchMethod search = SearchMethod::Tree) {
+/// Lennard-Jones with r0 = 0.5, 2 x 2 points per facet, cutoff 2.5.
+SurfaceInteraction sceneInteraction(const Scene& sc, std::vector<Real> densities, SearchMethod search,
+                                    Real smoothing = -1.0) {
   SurfaceInteractionOptions o;
   o.formulation = Formulation::ThreeD;
   o.quadraturePoints = 2;
   o.cutoff = 2.5;
   o.search = search;
-  return SurfaceInteraction(sc.surfaces, {1.0, 1.3}, makePotential("lennard-jones", 1.0, 0.5), o);
+  o.projectionSmoothing = smoothing;
+  return SurfaceInteraction(sc.surfaces, std::move(densities), makePotential("lennard-jones", 1.0, 0.5), o);
+}
+
+SurfaceInteraction makeInteraction(const Scene& sc, SearchMethod search = SearchMethod::Tree) {
+  return sceneInteraction(sc, {1.0, 1.3}, search);
 }
 
 std::vector<Real> residual(SurfaceInteraction& si, const std::vector<Real>& coords) {
@@ -173,12 +180,7 @@ Scene patchOverValley(Real slope, Real x0) {
 }
 
 SurfaceInteraction valleyInteraction(const Scene& sc, Real smoothing) {
-  SurfaceInteractionOptions o;
-  o.formulation = Formulation::ThreeD;
-  o.quadraturePoints = 2;
-  o.cutoff = 2.5;
-  o.projectionSmoothing = smoothing;
-  return SurfaceInteraction(sc.surfaces, {1.0, 1.0}, makePotential("lennard-jones", 1.0, 0.5), o);
+  return sceneInteraction(sc, {1.0, 1.0}, SearchMethod::Tree, smoothing);
 }
 
 // Force on the patch as its centre crosses the valley's bisector: with the

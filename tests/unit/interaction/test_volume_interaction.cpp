@@ -320,6 +320,36 @@ TEST(VolumeInteraction, TetrahedronRuleIsSymmetric) {
   EXPECT_NEAR(energy(odd, -1.0), e, 1e-13 * std::abs(e));  // the mirror image, positively oriented
 }
 
+TEST(VolumeInteraction, RowCellsSplitThePairsBetweenRanks) {
+  // two "ranks" listing the pairs of alternate cells add up to one listing all;
+  // a Tet4 pair stays within the tetrahedron rule's order
+  TwoBodies t = twoBodies(Formulation::ThreeD, mesh::CellType::Tet4);
+  VolumeInteractionOptions o;
+  o.formulation = Formulation::ThreeD;
+  o.cutoff = 1e3;
+  auto pot = std::make_shared<LennardJones>(0.7, 0.3);
+  VolumeInteraction all(t.mesh, {1.0, 1.0}, pot, o);
+  ASSERT_TRUE(all.updatePairs(t.mesh.coords.data()));
+  for (const VolumePair& p : all.pairs()) EXPECT_LE(p.order, kMaxTetOrder);
+  const Assembled full = assemble(all, t.mesh.coords, true);
+  std::vector<Real> sum(full.f.size(), 0.0);
+  std::size_t listed = 0;
+  for (int part = 0; part < 2; ++part) {
+    VolumeInteraction mine(t.mesh, {1.0, 1.0}, pot, o);
+    std::vector<char> rows(t.mesh.numCells());
+    for (std::size_t c = 0; c < rows.size(); ++c) rows[c] = int(c % 2) == part;
+    mine.setRowCells(rows);
+    mine.updatePairs(t.mesh.coords.data());
+    listed += mine.pairs().size();
+    const Assembled a = assemble(mine, t.mesh.coords, false);
+    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += a.f[i];
+  }
+  EXPECT_EQ(listed, all.pairs().size());
+  Real fmax = 0.0;
+  for (Real v : full.f) fmax = std::max(fmax, std::abs(v));
+  for (std::size_t i = 0; i < sum.size(); ++i) EXPECT_NEAR(sum[i], full.f[i], 1e-13 * fmax) << "dof " << i;
+}
+
 TEST(VolumeInteraction, RejectsBadInput) {
   TwoBodies t = twoBodies(Formulation::PlaneStrain, mesh::CellType::Quad4);
   auto pot = std::make_shared<LennardJones>(1.0, 0.3);

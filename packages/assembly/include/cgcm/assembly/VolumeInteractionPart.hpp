@@ -46,9 +46,10 @@ class VolumeInteractionPart final : public InteractionPart {
   Teuchos::RCP<const DofMap> dofs_;
   std::shared_ptr<interaction::VolumeInteraction> interaction_;
   Real searchRadiusFactor_;
-  std::vector<char> ownsCell_;  ///< [cell]: this rank evaluates the pairs of which it is the row cell
   ReplicatedCoordinates coords_;
   Kokkos::View<LocalIndex**> rowIds_;  ///< [node][i]: overlap-map id of the node's dof i, or -1
+  Kokkos::View<LocalIndex**> colIds_;  ///< [node][i]: column id in the matrix of colMapOfIds_
+  Teuchos::RCP<const Map> colMapOfIds_;  ///< held, so that a new map never reuses its address
   double searchSeconds_ = 0.0;
 };
 

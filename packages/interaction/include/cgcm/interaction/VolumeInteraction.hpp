@@ -101,7 +101,7 @@ struct VolumeInteractionSummary {
   Real cutoff = 0.0;
   Real skin = 0.0;
   long numListBuilds = 0;          ///< pair lists built so far
-  LocalIndex numPairs = 0;         ///< directed pairs in the list
+  LocalIndex numPairs = 0;         ///< directed pairs in the list (of the row cells set)
   long numPointPairs = 0;          ///< quadrature-point pairs of the last evaluate (this rank)
   int maxOrderUsed = 0;            ///< highest quadrature order in the list
   LocalIndex numAtMaxOrder = 0;    ///< directed pairs capped at the maximum order
@@ -180,8 +180,7 @@ template <int Dim, class Element>
 KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
                                          bool axisymmetric, CellPoints& out) {
   constexpr int nn = Element::numNodes;
-  constexpr bool tet = Dim == 3 && nn == 4;
-  if (tet && order > kMaxTetOrder) order = kMaxTetOrder;
+  constexpr bool tet = Dim == 3 && nn == 4;  // pairs with a Tet4 have order <= kMaxTetOrder
   out.numNodes = nn;
   out.count = 0;
   const Real beta0 = m.density(m.cellBody(cell));
@@ -356,12 +355,16 @@ class VolumeInteraction {
   void invalidatePairs() { built_ = false; }
   const std::vector<VolumePair>& pairs() const { return pairs_; }
 
-  /// Evaluates every directed pair whose row cell has rowCellMask[cell] != 0
-  /// (all with an empty mask) at `coords` and calls
+  /// Keeps only the directed pairs whose row cell has rowCells[cell] != 0 in
+  /// the pair lists built from now on (a rank's own cells: it writes only
+  /// their rows); empty (the default): every pair.
+  void setRowCells(std::vector<char> rowCells);
+
+  /// Evaluates every directed pair of the list at `coords` and calls
   /// scatter(const VolumeContribution&, long pointPairs) for each, inside a
   /// Kokkos::parallel_for. Fills summary().energy and the resultants.
   template <class Scatter>
-  void evaluate(const Real* coords, Scatter scatter, bool withTangent, const std::vector<char>& rowCellMask = {});
+  void evaluate(const Real* coords, Scatter scatter, bool withTangent);
 
   /// The interaction energy of the current pair list at `coords` (all pairs).
   Real energy(const Real* coords);
@@ -404,6 +407,7 @@ class VolumeInteraction {
   std::vector<std::vector<LocalIndex>> cellsOfBody_;
   std::vector<LocalIndex> interactingNodes_;  ///< nodes of cells of bodies that interact (sorted)
   detail::VolumeMeshView view_;
+  std::vector<char> rowCells_;  ///< [cell]: pairs with this row cell are listed (empty: all)
   std::vector<VolumePair> pairs_;
   Kokkos::View<VolumePair*> pairsView_;
   bool built_ = false;
@@ -425,18 +429,7 @@ void VolumeInteraction::run(const Kokkos::View<const VolumePair*>& pairs, const 
 }
 
 template <class Scatter>
-void VolumeInteraction::evaluate(const Real* coords, Scatter scatter, bool withTangent,
-                                 const std::vector<char>& rowCellMask) {
-  Kokkos::View<const VolumePair*> selected = pairsView_;
-  if (!rowCellMask.empty()) {
-    std::size_t n = 0;
-    for (const VolumePair& p : pairs_) n += rowCellMask[p.rowCell] != 0;
-    Kokkos::View<VolumePair*> mine("cgcm::volume_pairs_owned", n);
-    n = 0;
-    for (const VolumePair& p : pairs_)
-      if (rowCellMask[p.rowCell]) mine(n++) = p;
-    selected = mine;
-  }
+void VolumeInteraction::evaluate(const Real* coords, Scatter scatter, bool withTangent) {
   // energy, resultants and point-pair counts, accumulated atomically next to the caller's scatter
   Kokkos::View<Real* [3]> resultant("cgcm::volume_resultant", numBodies_);
   Kokkos::View<Real[1]> energy("cgcm::volume_energy");
@@ -451,11 +444,11 @@ void VolumeInteraction::evaluate(const Real* coords, Scatter scatter, bool withT
   };
   const auto t0 = std::chrono::steady_clock::now();
   if (options_.formulation == Formulation::ThreeD)
-    run<Formulation::ThreeD>(selected, coords, wrapped, withTangent);
+    run<Formulation::ThreeD>(pairsView_, coords, wrapped, withTangent);
   else if (options_.formulation == Formulation::PlaneStrain)
-    run<Formulation::PlaneStrain>(selected, coords, wrapped, withTangent);
+    run<Formulation::PlaneStrain>(pairsView_, coords, wrapped, withTangent);
   else
-    run<Formulation::Axisymmetric>(selected, coords, wrapped, withTangent);
+    run<Formulation::Axisymmetric>(pairsView_, coords, wrapped, withTangent);
   summary_.energy = energy(0);
   summary_.numPointPairs = pointPairs(0);
   summary_.totalPointPairs += pointPairs(0);
