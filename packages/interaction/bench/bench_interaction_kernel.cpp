@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < si.pairs().size(); ++i)
     for (int a = 0; a < 4; ++a)
       for (int k = 0; k < 2; ++k) z[8 * i + 2 * a + k] = coords[2 * out[i].colNodes[a] + k];
-  const SurfaceInteraction::Law law = si.law(0, 1);
+  const auto law = si.law(std::get<InversePowerPair>(si.kernelPotential()), 0, 1);
   const GaussRule& rule = si.quadrature();
   Real sink = 0.0;
   const auto t4 = Clock::now();

@@ -3,6 +3,9 @@
 #include <cctype>
 
 #include <algorithm>
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <limits>
 #include <cmath>
 #include <sstream>
 
@@ -41,26 +44,22 @@ std::optional<Real> PairPotential::surfaceEquilibriumDistance() const {
   const int n = 3000;
   const Real lo = 1e-3 * r0_, hi = 1e3 * r0_;
   const Real ratio = std::pow(hi / lo, 1.0 / n);
-  // outermost sign change, scanning inwards from large r
+  // outermost sign change, scanning inwards from large r; exact zeros (an
+  // exponential tail underflows) are no sign
   Real rOut = hi, fOut = halfSpace(hi);
   for (int i = n - 1; i >= 0; --i) {
     const Real rIn = lo * std::pow(ratio, i);
     const Real fIn = halfSpace(rIn);
-    if ((fIn > 0.0) != (fOut > 0.0) && fIn != 0.0 && fOut != 0.0) {
-      Real a = rIn, b = rOut, fa = fIn;
-      for (int it = 0; it < 200 && (b - a) > 1e-15 * b; ++it) {
-        const Real m = 0.5 * (a + b);
-        const Real fm = halfSpace(m);
-        if ((fm > 0.0) == (fa > 0.0)) {
-          a = m;
-          fa = fm;
-        } else {
-          b = m;
-        }
-      }
-      return 0.5 * (a + b);
+    if (fIn == 0.0) {
+      if (fOut != 0.0) return rIn;
+      continue;
     }
-    if (fIn == 0.0) return rIn;
+    if (fOut != 0.0 && (fIn > 0.0) != (fOut > 0.0)) {
+      boost::uintmax_t iterations = 200;
+      const auto root = boost::math::tools::toms748_solve([&](Real r) { return halfSpace(r); }, rIn, rOut, fIn, fOut,
+                                                          boost::math::tools::eps_tolerance<Real>(50), iterations);
+      return 0.5 * (root.first + root.second);
+    }
     rOut = rIn;
     fOut = fIn;
   }
@@ -92,28 +91,11 @@ Real PairPotential::peakTractionCoefficient() const {
     }
   }
   if (best < 0) return 0.0;
-  // golden-section refinement between the neighbouring samples
-  Real a = lo * std::pow(ratio, std::max(best - 1, 0));
-  Real b = lo * std::pow(ratio, std::min(best + 1, n));
-  const Real g = 0.5 * (std::sqrt(5.0) - 1.0);
-  Real c = b - g * (b - a), d = a + g * (b - a);
-  Real fc = -halfSpace(c), fd = -halfSpace(d);
-  for (int it = 0; it < 200 && (b - a) > 1e-14 * b; ++it) {
-    if (fc > fd) {
-      b = d;
-      d = c;
-      fd = fc;
-      c = b - g * (b - a);
-      fc = -halfSpace(c);
-    } else {
-      a = c;
-      c = d;
-      fc = fd;
-      d = a + g * (b - a);
-      fd = -halfSpace(d);
-    }
-  }
-  return std::max({bestValue, fc, fd});
+  // Brent's minimisation of halfSpace between the neighbouring samples
+  const Real a = lo * std::pow(ratio, std::max(best - 1, 0)), b = lo * std::pow(ratio, std::min(best + 1, n));
+  const auto minimum = boost::math::tools::brent_find_minima([&](Real r) { return halfSpace(r); }, a, b,
+                                                             std::numeric_limits<Real>::digits / 2);
+  return std::max(bestValue, -minimum.second);
 }
 
 // ---------------------------------------------------------------------------
@@ -131,14 +113,14 @@ Real LennardJones::dphi(Real r) const {
   return -12.0 * epsilon() * (q6 * q6 - q6) / r;
 }
 
-InversePowerPair LennardJones::inversePowers() const {
+KernelPotential LennardJones::kernelPotential() const {
   const Real r6 = std::pow(r0(), 6);
-  return {epsilon() * r6 * r6, 2.0 * epsilon() * r6};
+  return InversePowerPair{epsilon() * r6 * r6, 2.0 * epsilon() * r6};
 }
 
-InversePowerPair RepulsiveLennardJones::inversePowers() const {
+KernelPotential RepulsiveLennardJones::kernelPotential() const {
   const Real r6 = std::pow(r0(), 6);
-  return {epsilon() * r6 * r6, 0.0};
+  return InversePowerPair{epsilon() * r6 * r6, 0.0};
 }
 
 Real LennardJones::halfSpace(Real r) const {
@@ -221,10 +203,18 @@ void RepulsiveLennardJones::halfSpaceWithDerivative(Real r, Real& value, Real& d
 const std::vector<PotentialEntry>& potentialRegistry() {
   static const std::vector<PotentialEntry> entries = {
       {"Lennard-Jones", "adhesion and repulsion",
-       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> { return std::make_shared<LennardJones>(eps, r0); }},
+       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
+         return std::make_shared<LennardJones>(eps, r0);
+       }},
       {"repulsive", "its r^-12 part only: a smooth barrier",
        [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
          return std::make_shared<RepulsiveLennardJones>(eps, r0);
+       }},
+      {"Morse",
+       "exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = 6/r0 (Lennard-Jones's well depth, position and curvature)",
+       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
+         return std::make_shared<PlainPairPotential<MorsePair>>("morse", eps, r0,
+                                                                MorsePair::matchedToLennardJones(eps, r0));
        }},
   };
   return entries;

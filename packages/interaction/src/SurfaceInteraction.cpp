@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/Method3Kernel3D.hpp"
@@ -18,7 +20,7 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
       potential_(std::move(potential)),
       options_(options) {
   if (!potential_) throw InputError("surface interaction: no pair potential given");
-  powers_ = potential_->inversePowers();
+  kernel_ = potential_->kernelPotential();
   if (surfaces_.size() != densities_.size()) {
     std::ostringstream os;
     os << "surface interaction: " << surfaces_.size() << " surfaces but " << densities_.size()
@@ -107,11 +109,15 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
 Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real cutoff) {
   const Real w = potential.adhesionWorkCoefficient();
   if (!(w > 0.0) || !std::isfinite(cutoff)) return 0.0;
-  const SurfaceInteraction::Law unit{potential.inversePowers(), 1.0, taperStart, cutoff};
+  const KernelPotential kernel = potential.kernelPotential();
   auto removed = [&](Real r) {  // Phi/beta (1 - S)
     Real T, dT, Tc, dTc;
     potential.halfSpaceWithDerivative(r, T, dT);
-    unit(r, Tc, dTc);
+    std::visit(
+        [&](const auto& p) {
+          TractionLaw<std::decay_t<decltype(p)>>{p, 1.0, taperStart, cutoff}(r, Tc, dTc);
+        },
+        kernel);
     return T - Tc;
   };
   // Simpson on the taper, and on [r_c, inf) after r = r_c / t (the integrand vanishes at t = 0).
@@ -385,7 +391,8 @@ bool allFinite(const Real f[4]) {
 
 }  // namespace
 
-PairState SurfaceInteraction::evaluatePair3D(const Real* coords, const InteractionPair& p,
+template <class P>
+PairState SurfaceInteraction::evaluatePair3D(const P& potential, const Real* coords, const InteractionPair& p,
                                              PairContribution& out, bool withTangent) const {
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& tl = targets_[p.otherBody];
@@ -406,7 +413,7 @@ PairState SurfaceInteraction::evaluatePair3D(const Real* coords, const Interacti
       col[t][a] = c;
     }
   out.numColNodes = nc;
-  const Law law = this->law(p.body, p.otherBody);
+  const auto law = this->law(potential, p.body, p.otherBody);
   const FacetPoint& q = facetRules_[p.body][p.qp];
   // One target: its contribution. Several: the softmin blend over rho_t
   // (header), K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta].
@@ -467,7 +474,17 @@ PairState SurfaceInteraction::evaluatePair3D(const Real* coords, const Interacti
 
 PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p,
                                            PairContribution& out, bool withTangent) const {
-  if (dim_ == 3) return evaluatePair3D(coords, p, out, withTangent);
+  return std::visit(
+      [&](const auto& potential) {
+        return dim_ == 3 ? evaluatePair3D(potential, coords, p, out, withTangent)
+                         : evaluatePairWith(potential, coords, p, out, withTangent);
+      },
+      kernel_);
+}
+
+template <class P>
+PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* coords, const InteractionPair& p,
+                                               PairContribution& out, bool withTangent) const {
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& sl = surfaces_[p.otherBody];
   out.dim = 2;
@@ -500,7 +517,7 @@ PairState SurfaceInteraction::evaluatePair(const Real* coords, const Interaction
     os << "surface interaction: segment " << p.facet << " of body " << p.body << " has zero length";
     throw NumericalError(os.str());
   }
-  const Law law = this->law(p.body, p.otherBody);
+  const auto law = this->law(potential, p.body, p.otherBody);
   const Real xi = rule_.points[p.qp], w = rule_.weights[p.qp];
   const bool axi = options_.formulation == Formulation::Axisymmetric;
   auto kernel = [&](int t, Real f[4], Real (*K)[8], Real* Jr) {

@@ -24,7 +24,7 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
     : dim_(mesh.dim), numBodies_(mesh.numBodies), numNodes_(mesh.numNodes()), densities_(std::move(densities)),
       potential_(std::move(potential)), options_(options) {
   if (!potential_) throw InputError(where() + "no potential");
-  law1_ = potential_->inversePowers();
+  law1_ = potential_->kernelPotential();
   if ((dim_ == 3) != (options_.formulation == Formulation::ThreeD))
     throw InputError(where() + "a " + std::to_string(dim_) + "D mesh with the " +
                      formulationName(options_.formulation) + " formulation");
@@ -85,11 +85,7 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
   summary_.resultant.assign(numBodies_, {0.0, 0.0, 0.0});
 }
 
-InversePowerPair VolumeInteraction::law() const {
-  // r0 -> b r0, eps -> s eps / b^3: c12 ~ eps r0^12 -> s b^9 c12, c6 ~ eps r0^6 -> s b^3 c6
-  const Real b3 = lengthScale_ * lengthScale_ * lengthScale_;
-  return {strength_ * b3 * b3 * b3 * law1_.c12, strength_ * b3 * law1_.c6};
-}
+KernelPotential VolumeInteraction::law() const { return scaled(law1_, strength_, lengthScale_); }
 
 void VolumeInteraction::setStrength(Real strength) {
   if (!(strength > 0.0) || !std::isfinite(strength))

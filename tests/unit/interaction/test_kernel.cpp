@@ -47,13 +47,14 @@ std::vector<Case> cases(Real shiftX) {
 }
 
 template <Formulation F>
-void residual(const Real z[8], Real xi, Real w, const SurfaceInteraction::Law& law, Real f[4]) {
+void residual(const Real z[8], Real xi, Real w, const TractionLaw<InversePowerPair>& law, Real f[4]) {
   method3Pair<F>(z, xi, w, law, f, nullptr);
 }
 
 template <Formulation F>
 void checkCase(const Case& c, const PairPotential& pot) {
-  const SurfaceInteraction::Law law{pot.inversePowers(), kBeta1 * kBeta2, kNoCutoff, kNoCutoff};
+  const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(pot.kernelPotential()), kBeta1 * kBeta2, kNoCutoff,
+                                          kNoCutoff};
   const GaussRule rule = gaussLegendreUnit(4);
   Real worstFd = 0.0, worstAd = 0.0;
   for (int q = 0; q < rule.size(); ++q) {
@@ -152,7 +153,7 @@ TEST(Method3Kernel, SignAndMagnitudeForParallelSegments) {
   // rbar = +y (from the lower surface to the upper point), n = -y: the force
   // applied to the upper body, -f, is +T ds in y (repulsive for T > 0).
   const LennardJones lj(1.0, 1.0);
-  const SurfaceInteraction::Law law{lj.inversePowers(), 1.0, kNoCutoff, kNoCutoff};
+  const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(lj.kernelPotential()), 1.0, kNoCutoff, kNoCutoff};
   for (Real h : {0.5, 1.0}) {
     const Real z[8] = {0.0, h, 1.0, h, 5.0, 0.0, -5.0, 0.0};
     Real f[4];
@@ -169,9 +170,10 @@ TEST(Method3Kernel, CutoffTaperIsContinuouslyDifferentiable) {
   // T S(r) with the C1 taper on [1.6, 2]: T and dT/dr continuous at both ends,
   // dT/dr the derivative of T inside the band, and T = 0 from the cutoff on.
   const LennardJones lj(1.0, 1.0);
-  const SurfaceInteraction::Law law{lj.inversePowers(), kBeta1 * kBeta2, 1.6, 2.0};
-  const SurfaceInteraction::Law sharp{lj.inversePowers(), kBeta1 * kBeta2, kNoCutoff, kNoCutoff};
-  auto T = [&](const SurfaceInteraction::Law& l, Real r) {
+  const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(lj.kernelPotential()), kBeta1 * kBeta2, 1.6, 2.0};
+  const TractionLaw<InversePowerPair> sharp{std::get<InversePowerPair>(lj.kernelPotential()), kBeta1 * kBeta2,
+                                            kNoCutoff, kNoCutoff};
+  auto T = [&](const TractionLaw<InversePowerPair>& l, Real r) {
     Real t, dt;
     l(r, t, dt);
     return std::pair<Real, Real>{t, dt};

@@ -36,7 +36,7 @@ std::vector<Real> sourceFacet(int nodes, Real dx, Real dy) {
 }
 
 template <int NF>
-Real worstTangentError(const std::vector<Real>& z, const SurfaceInteraction::Law& law, std::set<int>& regions) {
+Real worstTangentError(const std::vector<Real>& z, const TractionLaw<InversePowerPair>& law, std::set<int>& regions) {
   constexpr int nz = 3 * NF + 9, nf = 3 * NF;
   Real worst = 0.0;
   for (const FacetPoint& q : facetQuadrature(NF, 3)) {
@@ -76,7 +76,8 @@ TEST(Method3Kernel3D, TangentOnFacesEdgesAndVertices) {
   const Real shifts[][2] = {{0.0, 0.0}, {-1.5, -1.5}, {0.6, -1.5}, {2.5, -0.3}, {1.0, 1.2},
                             {-0.2, 2.3}, {-1.5, 0.6}, {-0.2, 0.1}};
   for (const PairPotential* pot : {static_cast<const PairPotential*>(&lj), static_cast<const PairPotential*>(&rep)}) {
-    const SurfaceInteraction::Law law{pot->inversePowers(), 1.2, kNoCutoff, kNoCutoff};
+    const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(pot->kernelPotential()), 1.2, kNoCutoff,
+                                            kNoCutoff};
     std::set<int> regions;
     Real worst3 = 0.0, worst4 = 0.0;
     for (const auto& s : shifts) {
@@ -95,7 +96,7 @@ TEST(Method3Kernel3D, ParallelFacesCarryTheHalfSpaceTraction) {
   // A flat unit square facing a (large) flat triangle at distance d: the
   // forces on the square sum to -T(d) times its area along the normal.
   const LennardJones lj(1.0, 1.0);
-  const SurfaceInteraction::Law law{lj.inversePowers(), 1.0, kNoCutoff, kNoCutoff};
+  const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(lj.kernelPotential()), 1.0, kNoCutoff, kNoCutoff};
   const Real d = 1.3;
   std::vector<Real> z = {0.0, 0.0, d, 0.0, 1.0, d, 1.0, 1.0, d, 1.0, 0.0, d,
                          -5.0, -5.0, 0.0, 10.0, -5.0, 0.0, -5.0, 10.0, 0.0};

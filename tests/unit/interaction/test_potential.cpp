@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <variant>
 
 #include "InteractionTestUtil.hpp"
 #include "cgcm/core/Error.hpp"
@@ -43,7 +44,7 @@ class MinimalLJ final : public PairPotential {
   Real dphi(Real r) const override { return lj_.dphi(r); }
   Real halfSpace(Real r) const override { return lj_.halfSpace(r); }
   Real dHalfSpace(Real r) const override { return lj_.dHalfSpace(r); }
-  InversePowerPair inversePowers() const override { return lj_.inversePowers(); }
+  KernelPotential kernelPotential() const override { return lj_.kernelPotential(); }
 
  private:
   LennardJones lj_;
@@ -57,7 +58,7 @@ class MinimalRepulsive final : public PairPotential {
   Real dphi(Real r) const override { return p_.dphi(r); }
   Real halfSpace(Real r) const override { return p_.halfSpace(r); }
   Real dHalfSpace(Real r) const override { return p_.dHalfSpace(r); }
-  InversePowerPair inversePowers() const override { return p_.inversePowers(); }
+  KernelPotential kernelPotential() const override { return p_.kernelPotential(); }
 
  private:
   RepulsiveLennardJones p_;
@@ -65,20 +66,71 @@ class MinimalRepulsive final : public PairPotential {
 
 }  // namespace
 
-TEST(InversePowerPair, IsThePotentialTheKernelsEvaluate) {
-  const LennardJones lj(0.7, 1.3);
-  const RepulsiveLennardJones rep(0.7, 1.3);
-  for (const PairPotential* p : {static_cast<const PairPotential*>(&lj), static_cast<const PairPotential*>(&rep)}) {
-    const InversePowerPair c = p->inversePowers();
-    for (Real r : {0.8, 1.1, 1.3, 2.0, 7.0}) {
-      EXPECT_NEAR(c.phi(r), p->phi(r), 1e-14 * std::abs(p->phi(r))) << p->name() << " r " << r;
-      Real v, d, vr, dr;
-      c.halfSpace(r, v, d);
-      p->halfSpaceWithDerivative(r, vr, dr);
-      EXPECT_NEAR(v, vr, 1e-14 * std::abs(vr)) << p->name() << " r " << r;
-      EXPECT_NEAR(d, dr, 1e-14 * std::abs(dr)) << p->name() << " r " << r;
+TEST(KernelPotential, IsThePotentialTheKernelsEvaluate) {
+  // every potential a deck can name: its kernel struct gives the same phi,
+  // dphi and half-space law, and scales as strength * phi(r / b) / b^3
+  for (const PotentialEntry& e : potentialRegistry()) {
+    const auto p = e.make(0.7, 1.3);
+    std::visit(
+        [&](const auto& c) {
+          const auto s = c.scaled(1.7, 1.4);
+          for (Real r : {0.8, 1.1, 1.3, 2.0, 7.0}) {
+            EXPECT_NEAR(c.phi(r), p->phi(r), 1e-14 * std::abs(p->phi(r))) << p->name() << " r " << r;
+            EXPECT_NEAR(2.0 * r * c.pointLaw(r * r).df, p->dphi(r),
+                        1e-13 * (std::abs(p->dphi(r)) + std::abs(p->phi(r)) / r))
+                << p->name() << " r " << r;
+            Real v, d, vr, dr;
+            c.halfSpace(r, v, d);
+            p->halfSpaceWithDerivative(r, vr, dr);
+            EXPECT_NEAR(v, vr, 1e-14 * std::abs(vr)) << p->name() << " r " << r;
+            EXPECT_NEAR(d, dr, 1e-14 * std::abs(dr)) << p->name() << " r " << r;
+            const Real scaledPhi = 1.7 * c.phi(r / 1.4) / (1.4 * 1.4 * 1.4);
+            EXPECT_NEAR(s.phi(r), scaledPhi, 1e-13 * std::abs(scaledPhi)) << p->name() << " r " << r;
+          }
+        },
+        p->kernelPotential());
+  }
+}
+
+TEST(KernelPotential, PointLawDerivativesMatchFiniteDifferences) {
+  for (const PotentialEntry& e : potentialRegistry())
+    std::visit(
+        [&](const auto& c) {
+          for (Real s : {0.6, 1.0, 1.7, 5.0}) {
+            const Real h = 1e-6 * s;
+            const RadialLaw L = c.pointLaw(s), Lp = c.pointLaw(s + h), Lm = c.pointLaw(s - h);
+            EXPECT_NEAR(L.df, (Lp.f - Lm.f) / (2 * h), 1e-7 * (std::abs(L.df) + std::abs(L.f))) << e.deckName;
+            EXPECT_NEAR(L.d2f, (Lp.df - Lm.df) / (2 * h), 1e-7 * (std::abs(L.d2f) + std::abs(L.df))) << e.deckName;
+          }
+        },
+        e.make(0.9, 1.1)->kernelPotential());
+}
+
+TEST(KernelPotential, HalfSpaceLawIsTheIntegralOfThePotential) {
+  // every named potential's half-space law against the quadrature of its phi
+  for (const PotentialEntry& e : potentialRegistry()) {
+    const auto p = e.make(0.9, 1.1);
+    for (Real h : {0.7, 1.0, 1.6, 3.0}) {
+      const Real integral = halfSpaceByQuadrature(*p, h);
+      EXPECT_NEAR(p->halfSpace(h), integral, 1e-9 * std::abs(integral)) << e.deckName << " h " << h;
+      const Real dh = 1e-6;
+      EXPECT_NEAR(p->dHalfSpace(h), (p->halfSpace(h + dh) - p->halfSpace(h - dh)) / (2 * dh),
+                  1e-7 * std::abs(p->dHalfSpace(h)))
+          << e.deckName << " h " << h;
     }
   }
+}
+
+TEST(KernelPotential, MorseSurfacePropertiesFromTheNumericalDefaults) {
+  // PairPotential's numerical r_S0, w and sigma_max for Morse (a = 6/r0, eps = r0 = 1)
+  // against the closed-form Phi solved in 30-digit arithmetic (mpmath):
+  // r_S0 = 0.621453487527153, w = 0.334688515313923, sigma_max = 0.891655226769446 at 0.753122479876200
+  const auto morse = makePotential("Morse", 1.0, 1.0);
+  const auto rs = morse->surfaceEquilibriumDistance();
+  ASSERT_TRUE(rs.has_value());
+  EXPECT_NEAR(*rs, 0.621453487527153, 1e-12);
+  EXPECT_NEAR(morse->adhesionWorkCoefficient(), 0.334688515313923, 1e-10);
+  EXPECT_NEAR(morse->peakTractionCoefficient(), 0.891655226769446, 1e-10);
 }
 
 TEST(Quadrature, GaussLegendreUnitIsExactForDegree2nMinus1) {
@@ -210,7 +262,8 @@ TEST(PairPotential, FactoryAndValidation) {
   EXPECT_EQ(makePotential("lennard-jones", 1.0, 1.0)->name(), "lennard-jones");
   EXPECT_EQ(makePotential("lj", 1.0, 1.0)->name(), "lennard-jones");
   EXPECT_EQ(makePotential("repulsive", 1.0, 1.0)->name(), "repulsive");
-  EXPECT_THROW(makePotential("morse", 1.0, 1.0), InputError);
+  EXPECT_EQ(makePotential("Morse", 1.0, 1.0)->name(), "morse");
+  EXPECT_THROW(makePotential("buckingham", 1.0, 1.0), InputError);
   // every potential a deck can name is made by its deck name
   for (const auto& e : potentialRegistry()) EXPECT_NE(makePotential(e.deckName, 1.0, 1.0), nullptr) << e.deckName;
   EXPECT_EQ(makePotential("Lennard-Jones", 1.0, 1.0)->name(), "lennard-jones");

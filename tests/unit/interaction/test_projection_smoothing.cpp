@@ -205,7 +205,8 @@ void checkClosestSegmentOnly() {
       z[2 * a] = c.coords[2 * all[a]];
       z[2 * a + 1] = c.coords[2 * all[a] + 1];
     }
-    method3Pair<F>(z, xi, rule.weights[p.qp], si.law(p.body, p.otherBody), f, K);
+    method3Pair<F>(z, xi, rule.weights[p.qp],
+                   si.law(std::get<InversePowerPair>(si.kernelPotential()), p.body, p.otherBody), f, K);
     for (int r = 0; r < 4; ++r) {
       EXPECT_EQ(out[i].f[r], f[r]);
       for (int j = 0; j < 8; ++j) EXPECT_EQ(out[i].K[r][j], K[r][j]);
@@ -331,7 +332,8 @@ TEST(ProjectionSmoothing, LengthScaleIsThePotentialWithScaledR0AndEpsilon) {
     EXPECT_NEAR(si.projectionSmoothing(), ref.projectionSmoothing(), 1e-15 * ref.projectionSmoothing());
 
     // the law itself, including the taper
-    const auto L = si.law(0, 1), Lr = ref.law(0, 1);
+    const auto L = si.law(std::get<InversePowerPair>(si.kernelPotential()), 0, 1);
+    const auto Lr = ref.law(std::get<InversePowerPair>(ref.kernelPotential()), 0, 1);
     for (Real r = 0.3; r < 1.1 * si.cutoff(); r *= 1.05) {
       Real T, dT, Tr, dTr;
       L(r, T, dT);

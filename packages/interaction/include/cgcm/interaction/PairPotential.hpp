@@ -11,19 +11,17 @@
 // (reference densities), so T is the same for both bodies of a pair.
 //
 // The kernels of both methods evaluate a potential through its plain-data
-// form (inversePowers(): InversePowerPair.hpp, no virtual calls); this class
+// form (kernelPotential(): KernelPotential.hpp, no virtual calls); this class
 // names it and gives the surface properties (r_S0, work of adhesion, peak
-// traction: numerical defaults, overridden by closed forms). A new potential
-// of inverse powers r^-12, r^-6 is one class here and one name in
-// makePotential; one of another form also needs its plain-data struct and
-// the kernels templated on it.
+// traction: numerical defaults, overridden by closed forms). A potential
+// with no closed forms of its own is a PlainPairPotential of its struct.
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cgcm/core/Types.hpp"
-#include "cgcm/interaction/InversePowerPair.hpp"
+#include "cgcm/interaction/KernelPotential.hpp"
 
 namespace cgcm::interaction {
 
@@ -35,8 +33,8 @@ class PairPotential {
 
   virtual std::string name() const = 0;
 
-  /// The coefficients of phi = c12 r^-12 - c6 r^-6, the form the kernels evaluate.
-  virtual InversePowerPair inversePowers() const = 0;
+  /// The plain-data form the kernels evaluate.
+  virtual KernelPotential kernelPotential() const = 0;
 
   Real epsilon() const { return epsilon_; }
   Real r0() const { return r0_; }
@@ -85,7 +83,7 @@ class LennardJones final : public PairPotential {
  public:
   LennardJones(Real epsilon, Real r0) : PairPotential(epsilon, r0) {}
   std::string name() const override { return "lennard-jones"; }
-  InversePowerPair inversePowers() const override;
+  KernelPotential kernelPotential() const override;
   Real phi(Real r) const override;
   Real dphi(Real r) const override;
   Real halfSpace(Real r) const override;
@@ -108,7 +106,7 @@ class RepulsiveLennardJones final : public PairPotential {
  public:
   RepulsiveLennardJones(Real epsilon, Real r0) : PairPotential(epsilon, r0) {}
   std::string name() const override { return "repulsive"; }
-  InversePowerPair inversePowers() const override;
+  KernelPotential kernelPotential() const override;
   Real phi(Real r) const override;
   Real dphi(Real r) const override;
   Real halfSpace(Real r) const override;
@@ -117,6 +115,37 @@ class RepulsiveLennardJones final : public PairPotential {
   std::optional<Real> surfaceEquilibriumDistance() const override { return std::nullopt; }
   Real adhesionWorkCoefficient() const override { return 0.0; }
   Real peakTractionCoefficient() const override { return 0.0; }
+};
+
+/// A potential given by its kernel struct alone (KernelPotential.hpp): phi,
+/// dphi and the half-space law from the struct, the surface properties from
+/// PairPotential's numerical defaults.
+template <class P>
+class PlainPairPotential final : public PairPotential {
+ public:
+  PlainPairPotential(std::string name, Real epsilon, Real r0, const P& law)
+      : PairPotential(epsilon, r0), name_(std::move(name)), law_(law) {}
+  std::string name() const override { return name_; }
+  KernelPotential kernelPotential() const override { return law_; }
+  Real phi(Real r) const override { return law_.phi(r); }
+  Real dphi(Real r) const override { return 2.0 * r * law_.pointLaw(r * r).df; }
+  Real halfSpace(Real r) const override {
+    Real value, derivative;
+    law_.halfSpace(r, value, derivative);
+    return value;
+  }
+  Real dHalfSpace(Real r) const override {
+    Real value, derivative;
+    law_.halfSpace(r, value, derivative);
+    return derivative;
+  }
+  void halfSpaceWithDerivative(Real r, Real& value, Real& derivative) const override {
+    law_.halfSpace(r, value, derivative);
+  }
+
+ private:
+  std::string name_;
+  P law_;
 };
 
 /// The potentials a deck can name, in one place: a new potential is its class

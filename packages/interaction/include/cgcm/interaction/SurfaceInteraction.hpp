@@ -174,6 +174,34 @@ struct InteractionSummary {
 /// potential has no adhesion or r_c is infinite).
 Real neglectedWorkFraction(const PairPotential& potential, Real taperStart, Real cutoff);
 
+/// Traction law of the bodies k, l: T(r) = beta_k beta_l Phi(r/b)/beta S(r),
+/// with the cutoff taper S = 1 below taperStart, 1 - 3 s^2 + 2 s^3 with
+/// s = (r - taperStart)/(cutoff - taperStart) up to the cutoff, 0 beyond
+/// (taperStart and cutoff are absolute, i.e. already scaled by b). P: a
+/// kernel potential (KernelPotential.hpp).
+template <class P>
+struct TractionLaw {
+  P potential;  ///< at length scale 1 (plain data: no virtual call per pair)
+  Real betaProduct;
+  Real taperStart;
+  Real cutoff;
+  Real lengthScale = 1.0;  ///< b
+  KOKKOS_INLINE_FUNCTION void operator()(Real r, Real& T, Real& dT) const {
+    potential.halfSpace(r / lengthScale, T, dT);
+    T *= betaProduct;
+    dT *= betaProduct / lengthScale;
+    if (r >= cutoff) {
+      T = dT = 0.0;
+      return;
+    }
+    if (r <= taperStart) return;
+    const Real width = cutoff - taperStart, s = (r - taperStart) / width;
+    const Real S = 1.0 - s * s * (3.0 - 2.0 * s), dS = -6.0 * s * (1.0 - s) / width;
+    dT = dT * S + T * dS;
+    T *= S;
+  }
+};
+
 class SurfaceInteraction {
  public:
   /// surfaces: one per body, index = body id (mesh::Mesh::surfaces); segments
@@ -278,34 +306,12 @@ class SurfaceInteraction {
 
   const InteractionSummary& summary() const { return summary_; }
 
-  /// Traction law of the bodies k, l: T(r) = beta_k beta_l Phi(r/b)/beta S(r),
-  /// with the cutoff taper S = 1 below taperStart, 1 - 3 s^2 + 2 s^3 with
-  /// s = (r - taperStart)/(cutoff - taperStart) up to the cutoff, 0 beyond
-  /// (taperStart and cutoff are absolute, i.e. already scaled by b).
-  struct Law {
-    InversePowerPair potential;  ///< at length scale 1 (plain data: no virtual call per pair)
-    Real betaProduct;
-    Real taperStart;
-    Real cutoff;
-    Real lengthScale = 1.0;  ///< b
-    KOKKOS_INLINE_FUNCTION void operator()(Real r, Real& T, Real& dT) const {
-      potential.halfSpace(r / lengthScale, T, dT);
-      T *= betaProduct;
-      dT *= betaProduct / lengthScale;
-      if (r >= cutoff) {
-        T = dT = 0.0;
-        return;
-      }
-      if (r <= taperStart) return;
-      const Real width = cutoff - taperStart, s = (r - taperStart) / width;
-      const Real S = 1.0 - s * s * (3.0 - 2.0 * s), dS = -6.0 * s * (1.0 - s) / width;
-      dT = dT * S + T * dS;
-      T *= S;
-    }
-  };
-  /// The law between bodies k and l.
-  Law law(int k, int l) const {
-    return Law{powers_, strength_ * densities_[k] * densities_[l], taperStart_, cutoff_, lengthScale_};
+  /// The potential's plain-data form, at strength 1 and length scale 1.
+  const KernelPotential& kernelPotential() const { return kernel_; }
+  /// The law between bodies k and l for the kernel potential `potential` (at length scale 1).
+  template <class P>
+  TractionLaw<P> law(const P& potential, int k, int l) const {
+    return TractionLaw<P>{potential, strength_ * densities_[k] * densities_[l], taperStart_, cutoff_, lengthScale_};
   }
 
   /// Scales every traction by `strength` > 0 (the potential's epsilon times
@@ -327,7 +333,11 @@ class SurfaceInteraction {
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
   void findTargets3D(const Real* coords, const Real x[3], int l, LocalIndex closest, InteractionPair& p);
   void keepBlendTargets(Real limit, int maxTargets, InteractionPair& p);
-  PairState evaluatePair3D(const Real* coords, const InteractionPair& p, PairContribution& out,
+  template <class P>
+  PairState evaluatePairWith(const P& potential, const Real* coords, const InteractionPair& p, PairContribution& out,
+                             bool withTangent) const;
+  template <class P>
+  PairState evaluatePair3D(const P& potential, const Real* coords, const InteractionPair& p, PairContribution& out,
                            bool withTangent) const;
   /// Calls visit(body, facet, quadrature point, x) for every quadrature
   /// point of every surface at `coords`, and facetDone(body, facet) after
@@ -346,7 +356,7 @@ class SurfaceInteraction {
   int dim_ = 2;
   std::vector<Real> densities_;
   std::shared_ptr<const PairPotential> potential_;
-  InversePowerPair powers_;  ///< potential_'s plain-data form
+  KernelPotential kernel_;  ///< potential_'s plain-data form
   SurfaceInteractionOptions options_;
   GaussRule rule_;
   Real cutoff1_ = 0.0, taperStart1_ = 0.0, smoothing1_ = 0.0;  ///< at length scale 1

@@ -37,7 +37,9 @@
 #include <array>
 #include <chrono>
 #include <memory>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "cgcm/core/Types.hpp"
@@ -244,9 +246,9 @@ KOKKOS_INLINE_FUNCTION void cellPoints(const VolumeMeshView& m, LocalIndex cell,
   }
 }
 
-template <Formulation F>
-KOKKOS_INLINE_FUNCTION void pointPairLaw(const InversePowerPair& c, const Real* x1, const Real* x2, Real& psi,
-                                         Real* g, Real (*H11)[3], Real (*H12)[3]) {
+template <Formulation F, class P>
+KOKKOS_INLINE_FUNCTION void pointPairLaw(const P& c, const Real* x1, const Real* x2, Real& psi, Real* g, Real (*H11)[3],
+                                         Real (*H12)[3]) {
   if constexpr (F == Formulation::ThreeD)
     pairLaw3D(c, x1, x2, psi, g, H11, H12);
   else if constexpr (F == Formulation::PlaneStrain)
@@ -256,13 +258,13 @@ KOKKOS_INLINE_FUNCTION void pointPairLaw(const InversePowerPair& c, const Real* 
 }
 
 /// The kernel: one directed pair per index.
-template <Formulation F, class Scatter>
+template <Formulation F, class P, class Scatter>
 struct VolumePairFunctor {
   static constexpr int Dim = F == Formulation::ThreeD ? 3 : 2;
   VolumeMeshView mesh;
   Kokkos::View<const VolumePair*> pairs;
   Kokkos::View<const Real*, Kokkos::MemoryTraits<Kokkos::Unmanaged>> x;
-  InversePowerPair law;
+  P law;  ///< kernel potential (KernelPotential.hpp)
   bool withTangent;
   Scatter scatter;
 
@@ -345,7 +347,7 @@ class VolumeInteraction {
   Real skin() const { return skin1_ * lengthScale_; }
   int maxQuadratureOrder() const { return maxOrder_; }
   /// The point-pair coefficients in use (strength and length scale applied).
-  InversePowerPair law() const;
+  KernelPotential law() const;
 
   /// Builds the pair list at `coords` (dim entries per node, mesh-wide) if
   /// none exists, a node moved by more than skin / 2 since it was built, or
@@ -399,7 +401,7 @@ class VolumeInteraction {
   LocalIndex numNodes_ = 0;
   std::vector<Real> densities_;
   std::shared_ptr<const PairPotential> potential_;
-  InversePowerPair law1_;  ///< at strength 1, length scale 1
+  KernelPotential law1_;  ///< at strength 1, length scale 1
   VolumeInteractionOptions options_;
   int maxOrder_ = 0;
   Real cutoff1_ = 0.0, skin1_ = 0.0;
@@ -419,12 +421,20 @@ class VolumeInteraction {
 template <Formulation F, class Scatter>
 void VolumeInteraction::run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter,
                             bool withTangent) {
-  detail::VolumePairFunctor<F, Scatter> functor{
-      view_, pairs,
-      Kokkos::View<const Real*, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(coords, std::size_t(dim_) * numNodes_),
-      law(), withTangent, scatter};
-  Kokkos::parallel_for("cgcm::volume_pairs", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, pairs.extent(0)),
-                       functor);
+  // one kernel per potential type, chosen once per evaluation
+  std::visit(
+      [&](const auto& law) {
+        detail::VolumePairFunctor<F, std::decay_t<decltype(law)>, Scatter> functor{
+            view_,
+            pairs,
+            Kokkos::View<const Real*, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(coords, std::size_t(dim_) * numNodes_),
+            law,
+            withTangent,
+            scatter};
+        Kokkos::parallel_for("cgcm::volume_pairs",
+                             Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, pairs.extent(0)), functor);
+      },
+      law());
   Kokkos::fence();
 }
 
