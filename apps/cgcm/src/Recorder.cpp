@@ -52,8 +52,9 @@ Real ContactProbe::contactRadius(const Vector& u) const {
   return profile.back().first;
 }
 
-Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
-         bool exodus, int parameterIndex, bool print, std::ostream& log)
+Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe,
+                   const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
+                   const Checkpoint* resume)
     : setup_(setup), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
       root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log), f_(disc.model->map()) {
   columns_ = {"step", "u"};
@@ -62,13 +63,18 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
   if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius"});
   if (setup_.balance) columns_.push_back("P_lower");
   columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
-  createOnRoot(*disc.dofs->comm(), [&] { csv_ = std::make_unique<io::CsvWriter>(dir + "/load_curve.csv", columns_); });
+  // a new file, or (restart) the file kept up to the checkpoint's last row
+  auto open = [&](const std::string& path, const std::vector<std::string>& columns) {
+    return resume ? std::make_unique<io::CsvWriter>(path, columns, double(resume->curve.back().step))
+                  : std::make_unique<io::CsvWriter>(path, columns);
+  };
+  if (resume) curve = resume->curve;
+  createOnRoot(*disc.dofs->comm(), [&] { csv_ = open(dir + "/load_curve.csv", columns_); });
   if (disc.problem->hasInteraction())
     createOnRoot(*disc.dofs->comm(), [&] {
-      bodyCsv_ = std::make_unique<io::CsvWriter>(dir + "/body_forces.csv",
-                                                 std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
+      bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
-  if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, columns_);
+  if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, columns_, resume ? resume->exodusSteps : -1);
 }
 
 void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
@@ -115,7 +121,5 @@ void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row
                 row.cutbacks ? ("  (" + std::to_string(row.cutbacks) + " cut-backs)").c_str() : "");
   log_ << line << std::flush;
 }
-
-std::vector<LoadPoint> curve;
 
 }  // namespace cgcm::app

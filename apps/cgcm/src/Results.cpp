@@ -70,17 +70,9 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 }
 
 ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc,
-                             const std::vector<std::string>& globals)
-    : disc_(disc), globals_(globals), root_(disc.dofs->comm()->getRank() == 0) {
+                             const std::vector<std::string>& globals, int keptSteps)
+    : disc_(disc), globals_(globals), root_(disc.dofs->comm()->getRank() == 0), gather_(disc.dofs->ownedMap()) {
   const auto& mesh = disc.problem->mesh();
-  const auto owned = disc.dofs->ownedMap();
-  std::vector<GlobalIndex> gids;
-  if (root_)
-    for (GlobalIndex g = 0; g < GlobalIndex(owned->getGlobalNumElements()); ++g) gids.push_back(g);
-  const auto rootMap = Teuchos::rcp(new assembly::Map(owned->getGlobalNumElements(), gids.data(), gids.size(), 0,
-                                                      disc.dofs->comm()));
-  gather_ = Teuchos::rcp(new assembly::Import(owned, rootMap));
-  all_ = Teuchos::rcp(new assembly::Vector(rootMap));
   io::ExodusVariables vars;
   for (int i = 0; i < mesh.dim; ++i) vars.nodal.push_back(kDisplacement[i]);
   if (disc.interaction) {
@@ -91,15 +83,15 @@ ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc
   for (const auto& c : stressComponents(disc.problem->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
-  createOnRoot(*disc.dofs->comm(), [&] { writer_ = std::make_unique<io::ExodusWriter>(path, "cgcm", mesh, vars); });
+  createOnRoot(*disc.dofs->comm(), [&] {
+    writer_ = keptSteps >= 0 ? std::make_unique<io::ExodusWriter>(path, mesh, vars, keptSteps)
+                             : std::make_unique<io::ExodusWriter>(path, "cgcm", mesh, vars);
+  });
 }
 
 void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
-  all_->doImport(x, *gather_, Tpetra::INSERT);
+  const std::vector<Real> u = gather_.gather(x);  // dof = node * dim + i
   if (!root_) return;
-  const auto v = all_->getLocalViewHost(Tpetra::Access::ReadOnly);
-  std::vector<Real> u(v.extent(0));
-  for (std::size_t k = 0; k < u.size(); ++k) u[k] = v(k, 0);  // dof = node * dim + i: the gids are 0 .. n - 1
   io::ExodusWriter::Fields nodal, element;
   displacementAndStress(u, nodal, element);
   if (disc_.interaction) traction(u, nodal);

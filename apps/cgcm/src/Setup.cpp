@@ -262,6 +262,9 @@ RCP<const ParameterList> validParameters() {
   output.set("Exodus", true,
              "write results.e (Exodus II: displacement, stress and interaction traction fields per load-curve row; "
              "ParaView)");
+  output.set("Checkpoint", true,
+             "write checkpoint.bin after every accepted state (displacement control), so that "
+             "`cgcm --restart <Directory>` can continue a run that was killed");
   return valid;
 }
 
@@ -755,7 +758,9 @@ void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath) 
   if (!deck.isSublist("Geometry") || !deck.sublist("Geometry").isType<std::string>("File")) return;
   const std::filesystem::path file = deck.sublist("Geometry").get<std::string>("File");
   if (file.empty() || file.is_absolute()) return;
-  deck.sublist("Geometry").set("File", (std::filesystem::path(deckPath).parent_path() / file).lexically_normal().string());
+  // absolute, so that parameters.xml (and a --restart from it) works from any folder
+  deck.sublist("Geometry").set(
+      "File", std::filesystem::absolute(std::filesystem::path(deckPath).parent_path() / file).lexically_normal().string());
 }
 
 ProblemSetup buildProblem(const ParameterList& deck) {

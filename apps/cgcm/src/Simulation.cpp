@@ -5,11 +5,14 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "cgcm/app/Checkpoint.hpp"
 #include "cgcm/app/Recorder.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/app/Summary.hpp"
@@ -85,7 +88,7 @@ Real runawayBound(const PathPlan& plan, const std::vector<Real>& waypoints, Real
 }  // namespace
 
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
-                        std::ostream& log) {
+                        std::ostream& log, bool restart) {
   const bool root = comm->getRank() == 0;
   const auto& out = deck.sublist("Output");
   const std::string dir = out.get<std::string>("Directory");
@@ -108,7 +111,15 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (!step.isParameter("Max Step Size") && plan.parameter == "u") step.set("Max Step Size", plan.path.maxIncrement);
   }
 
+  std::optional<Checkpoint> resume;
+  if (restart) {
+    if (plan.arcLength || plan.parameter != "u")
+      throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
+                       "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
+    resume = readCheckpoint(dir);
+  }
   createOnRoot(*comm, [&] {
+    if (restart) return;  // the folder and its parameters.xml are the run's own
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir))
@@ -118,6 +129,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   });
 
   const Discretization disc = discretize(comm, setup, linearSolver);
+  if (resume && resume->u.size() != disc.dofs->ownedMap()->getGlobalNumElements())
+    throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
+                     " unknowns, the deck's problem " +
+                     std::to_string(disc.dofs->ownedMap()->getGlobalNumElements()) +
+                     " (parameters.xml or the mesh changed since)");
   const auto& problem = disc.problem;
   const auto& model = disc.model;
   solver::NewtonSolver newton(model, newtonSettings);
@@ -135,20 +151,34 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
         << newtonSettings.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
   }
 
-  // The initial guess: the prescribed motion of whole bodies at the first u.
+  // The summary says what the run is doing until it ends.
+  if (root) {
+    std::ofstream running(dir + "/summary.txt");
+    running << "running" << (resume ? " (restarted after step " + std::to_string(resume->stepper.step) + ")" : "")
+            << "\n";
+  }
+
+  // The initial guess: the prescribed motion of whole bodies at the first u
+  // (a restart: the checkpoint's state).
   Vector u(model->map());
-  if (!setup.initialMotion.empty()) {
+  RootGather gather(disc.dofs->ownedMap());
+  Vector previous(model->map());
+  if (resume) {
+    gather.scatter(resume->u, u);
+    if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
+  } else if (!setup.initialMotion.empty()) {
     assembly::DirichletConditions motion(disc.dofs);
     for (const auto& c : setup.initialMotion)
       motion.add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
     motion.impose(plan.path.path.front(), u);
   }
-  model->setLoad(plan.path.path.front());
+  model->setLoad(resume ? resume->stepper.load : plan.path.path.front());
   if (plan.arcLength || plan.parameter != "u") continuation.validate(u);  // LOCA reads its list: typos stop here
 
-  Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), parameterIndex, printSteps, log);
+  Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), parameterIndex, printSteps, log,
+                    resume ? &*resume : nullptr);
   RunResult result;
-  int step = 0;
+  int step = resume ? resume->stepper.step : 0;
   bool stable = true;
   auto recordPoint = [&](const solver::PathPoint& pt) {
     LoadPoint row;
@@ -183,10 +213,29 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   try {
     if (!plan.arcLength) {
       solver::LoadStepper stepper(model, newton, plan.path, &continuation);
+      Real lastLoad = resume ? resume->lastLoad : plan.path.path.front();
+      bool checkpointFailed = false;
+      solver::LoadStepper::CheckpointSink checkpoint;
+      if (out.get<bool>("Checkpoint"))
+        checkpoint = [&](const solver::StepperState& s, const Vector& state, const Vector& before) {
+          Checkpoint c;  // collective: the vectors are gathered on rank 0
+          c.stepper = s;
+          c.lastLoad = lastLoad;
+          c.exodusSteps = recorder.exodusSteps();
+          c.u = gather.gather(state);
+          if (s.havePrevious) c.previous = gather.gather(before);
+          if (!root) return;
+          c.curve = recorder.curve;
+          if (!writeCheckpoint(dir, c) && !checkpointFailed) {
+            checkpointFailed = true;
+            std::cerr << "cgcm: warning: cannot write " << checkpointPath(dir) << "; the run goes on without\n";
+          }
+        };
+      const solver::StepperState* from = resume ? &resume->stepper : nullptr;
+      const Vector* fromPrevious = resume && resume->stepper.havePrevious ? &previous : nullptr;
       if (probe) {
         // A converged step whose gap moved much more than the prescribed displacement left its branch.
         const Real floor = 0.05 * setup.interaction->potential->r0();
-        Real lastLoad = plan.path.path.front();
         stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
           const Real du = std::abs(model->load() - lastLoad);
           return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
@@ -203,7 +252,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
           p[0] = info.load;
           recorder.record(state, p, row);
           if (!info.fold) lastLoad = info.load;
-        });
+        }, checkpoint, from, fromPrevious);
       } else {
         stepper.run(u, [&](const solver::StepInfo& info, const Vector& state) {
           LoadPoint row;
@@ -214,7 +263,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
           auto p = model->parameters();
           p[0] = info.load;
           recorder.record(state, p, row);
-        });
+        }, checkpoint, from, fromPrevious);
       }
       for (const auto& j : stepper.jumps()) result.continuationSteps += j.steps, result.graphRestarts += j.restarts;
     } else {

@@ -4,6 +4,7 @@
 #include <Tpetra_Core.hpp>
 
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 
 #include "cgcm/app/Setup.hpp"
@@ -15,6 +16,8 @@ namespace {
 
 void usage(std::ostream& out) {
   out << "usage: cgcm DECK.xml [Path/To/Parameter=value ...]\n"
+         "       cgcm --restart OUTPUT_DIR [Path/To/Parameter=value ...]\n"
+         "                       (continues a killed run from OUTPUT_DIR/checkpoint.bin with its parameters.xml)\n"
          "       cgcm --help     (every parameter with its default and meaning)\n"
          "       cgcm --version\n"
          "       cgcm --kokkos-help (Kokkos' run-time options)\n"
@@ -48,17 +51,24 @@ int main(int argc, char** argv) {
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   std::vector<std::string> args(argv + 1, argv + argc);
+  const bool restart = !args.empty() && args[0] == "--restart";
+  if (restart) args.erase(args.begin());
   if (args.empty() || args[0].rfind("--", 0) == 0) {
     if (root) usage(std::cerr);
     return 2;
   }
   try {
-    auto deck = cgcm::io::readDeck(args[0]);
+    // a restart reads the parameters the run echoed into its folder, and writes there
+    const std::string deckPath = restart ? args[0] + "/parameters.xml" : args[0];
+    if (restart && !std::filesystem::is_regular_file(deckPath))
+      throw cgcm::InputError("--restart " + args[0] + ": not the output folder of a run (no parameters.xml)");
+    auto deck = cgcm::io::readDeck(deckPath);
     cgcm::io::applyOverrides(*deck, *cgcm::app::validParameters(),
                              std::vector<std::string>(args.begin() + 1, args.end()));
-    cgcm::app::resolveMeshFile(*deck, args[0]);
+    if (restart) deck->sublist("Output").set("Directory", args[0]);
+    cgcm::app::resolveMeshFile(*deck, deckPath);
     cgcm::io::validateDeck(*deck, *cgcm::app::validParameters());
-    const auto result = cgcm::app::runSimulation(comm, *deck, std::cout);
+    const auto result = cgcm::app::runSimulation(comm, *deck, std::cout, restart);
     return result.completed ? 0 : 1;
   } catch (const cgcm::InputError& e) {
     if (root) std::cerr << "cgcm: error: " << e.what() << "\n";

@@ -157,6 +157,43 @@ ExodusWriter::ExodusWriter(const std::string& path, const std::string& title, co
   }
 }
 
+ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusVariables& variables,
+                           int keptSteps)
+    : path_(path), steps_(keptSteps), names_(variables), numNodes_(std::size_t(mesh.numNodes())),
+      numCells_(std::size_t(mesh.numCells())) {
+  int cpuWordSize = sizeof(double), ioWordSize = 0;
+  float version = 0.0f;
+  exoid_ = ex_open(path.c_str(), EX_WRITE, &cpuWordSize, &ioWordSize, &version);
+  if (exoid_ < 0) throw InputError("cannot continue Exodus file \"" + path + "\": " + exodusMessage());
+  auto refuse = [&](const std::string& why) {
+    ex_close(exoid_);
+    exoid_ = -1;
+    throw InputError("cannot continue Exodus file \"" + path + "\": " + why);
+  };
+  ex_set_max_name_length(exoid_, kMaxNameLength);
+  ex_init_params init{};
+  if (ex_get_init_ext(exoid_, &init) < 0) refuse(exodusMessage());
+  if (init.num_dim != mesh.dim || std::size_t(init.num_nodes) != numNodes_ || std::size_t(init.num_elem) != numCells_ ||
+      std::size_t(init.num_elem_blk) != mesh.blocks.size())
+    refuse("it holds another mesh");
+  for (const auto& b : mesh.blocks) blockCells_.push_back(std::size_t(b.numCells()));
+  const std::pair<ex_entity_type, const std::vector<std::string>*> kinds[] = {
+      {EX_NODAL, &names_.nodal}, {EX_ELEM_BLOCK, &names_.element}, {EX_GLOBAL, &names_.global}};
+  for (const auto& [type, names] : kinds) {
+    int count = 0;
+    if (ex_get_variable_param(exoid_, type, &count) < 0 || std::size_t(count) != names->size())
+      refuse("it holds other variables");
+    for (int k = 0; k < count; ++k) {
+      char name[kMaxNameLength + 1] = {};
+      if (ex_get_variable_name(exoid_, type, k + 1, name) < 0 || (*names)[std::size_t(k)] != name)
+        refuse("it holds other variables");
+    }
+  }
+  const int stored = int(ex_inquire_int(exoid_, EX_INQ_TIME));
+  if (stored < keptSteps)
+    refuse("it holds " + std::to_string(stored) + " steps, the checkpoint " + std::to_string(keptSteps));
+}
+
 ExodusWriter::~ExodusWriter() {
   if (exoid_ >= 0) ex_close(exoid_);
 }

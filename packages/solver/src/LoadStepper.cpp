@@ -220,7 +220,8 @@ bool LoadStepper::relaxFromFold(const PathPoint& fold, Real direction, Real pNew
   }
 }
 
-void LoadStepper::run(Vector& u, const Observer& observer) {
+void LoadStepper::run(Vector& u, const Observer& observer, const CheckpointSink& checkpoint,
+                      const StepperState* resume, const Vector* previous) {
   const auto& path = settings_.path;
   Vector trial(u.getMap());
   Vector uPrevious(u.getMap());  // the converged state before u, for the secant predictor
@@ -228,6 +229,9 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
   bool havePrevious = false;
   int step = 0;
   Real pCurrent = path[0];
+  if (resume != nullptr && (resume->segment < 1 || resume->segment >= path.size()))
+    throw InputError("restart: the checkpoint's path segment " + std::to_string(resume->segment) +
+                     " is not one of this path's (1 .. " + std::to_string(path.size() - 1) + ")");
 
   // Predictor: extrapolate along the secant of the last two states (exact in
   // the rigid phase, close elsewhere), then impose the new boundary values.
@@ -250,7 +254,29 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
     return info.newton.converged;
   };
 
-  {
+  Real p = path[0];
+  Real increment = settings_.initialIncrement;
+  std::size_t firstSegment = 1;
+  auto state = [&](std::size_t seg) {
+    StepperState s;
+    s.segment = seg;
+    s.load = p;
+    s.increment = increment;
+    s.step = step;
+    s.havePrevious = havePrevious;
+    s.previousLoad = pPrevious;
+    return s;
+  };
+  if (resume != nullptr) {
+    p = pCurrent = resume->load;
+    increment = resume->increment;
+    step = resume->step;
+    havePrevious = resume->havePrevious && previous != nullptr;
+    pPrevious = resume->previousLoad;
+    if (havePrevious) uPrevious.assign(*previous);
+    firstSegment = resume->segment;
+    model_->setLoad(p);
+  } else {
     StepInfo info;
     info.load = path[0];
     if (!attempt(path[0], info))
@@ -258,11 +284,10 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
                            info.newton.failure);
     u.assign(trial);
     observer(info, u);
+    if (checkpoint) checkpoint(state(1), u, uPrevious);
   }
 
-  Real p = path[0];
-  Real increment = settings_.initialIncrement;
-  for (std::size_t seg = 1; seg < path.size(); ++seg) {
+  for (std::size_t seg = firstSegment; seg < path.size(); ++seg) {
     const Real target = path[seg];
     const Real dir = target > p ? 1.0 : -1.0;
     while (dir * (target - p) > 1e-14 * (1.0 + std::abs(target))) {
@@ -309,6 +334,7 @@ void LoadStepper::run(Vector& u, const Observer& observer) {
       observer(info, u);
       if (info.cutbacks == 0 && info.newton.iterations <= settings_.easyIterations)
         increment = std::min(settings_.maxIncrement, increment * settings_.growth);
+      if (checkpoint) checkpoint(state(seg), u, uPrevious);
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cgcm/app/Checkpoint.hpp"
 #include "cgcm/app/Results.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/app/Simulation.hpp"
@@ -42,8 +43,14 @@ class ContactProbe {
 /// progress lines.
 class Recorder {
  public:
+  /// `resume` (a restart): continues the files of `dir` after the checkpoint's
+  /// last row (later rows, written after it, are dropped) and starts the curve
+  /// with the checkpoint's rows.
   Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
-           bool exodus, int parameterIndex, bool print, std::ostream& log);
+           bool exodus, int parameterIndex, bool print, std::ostream& log, const Checkpoint* resume = nullptr);
+
+  /// Steps in results.e so far (rank 0; 0 without Exodus output).
+  int exodusSteps() const { return results_ ? results_->numSteps() : 0; }
 
   /// Records the state x at parameters p; `row` carries step, flags and solver figures. Collective.
   void record(const assembly::Vector& x, const std::vector<Real>& p, LoadPoint row);

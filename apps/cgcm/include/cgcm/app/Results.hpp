@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "cgcm/app/Checkpoint.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/io/ExodusWriter.hpp"
 
@@ -29,8 +30,14 @@ class ResultsWriter {
  public:
   /// Creates `path` on rank 0 with the mesh of `disc` and the global
   /// variables `globals` (stresses with the problem's material of each
-  /// body). Throws InputError (rank 0) if it cannot be created. Collective.
-  ResultsWriter(const std::string& path, const Discretization& disc, const std::vector<std::string>& globals);
+  /// body); keptSteps >= 0: continues the existing file after that many
+  /// steps (a restart). Throws InputError (rank 0) if it cannot be created
+  /// or continued. Collective.
+  ResultsWriter(const std::string& path, const Discretization& disc, const std::vector<std::string>& globals,
+                int keptSteps = -1);
+
+  /// Steps written to the file so far (rank 0; 0 elsewhere).
+  int numSteps() const { return writer_ ? writer_->numSteps() : 0; }
 
   /// Appends the state x with the globals' values (in the constructor's
   /// order) as step time = number of the step, flushed. Collective.
@@ -44,8 +51,7 @@ class ResultsWriter {
   const Discretization& disc_;
   std::vector<std::string> globals_;
   bool root_;
-  Teuchos::RCP<const assembly::Import> gather_;
-  Teuchos::RCP<assembly::Vector> all_;
+  RootGather gather_;
   std::unique_ptr<io::ExodusWriter> writer_;
 };
 

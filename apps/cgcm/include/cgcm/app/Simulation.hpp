@@ -48,7 +48,9 @@ struct RunResult {
 /// progress on rank 0 to `log`. Throws
 /// InputError for inconsistent input before any work; a run the solver stops
 /// returns completed = false with the reason. Collective.
+/// restart: continue the run of Output/Directory from its checkpoint.bin
+/// (displacement control only; InputError otherwise or without a checkpoint).
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
-                        std::ostream& log);
+                        std::ostream& log, bool restart = false);
 
 }  // namespace cgcm::app

@@ -41,6 +41,12 @@ class ExodusWriter {
   /// than 64 characters) or a mesh Exodus cannot hold.
   ExodusWriter(const std::string& path, const std::string& title, const mesh::Mesh& mesh,
                const ExodusVariables& variables);
+  /// Continues the file `path` written by this class for `mesh` with
+  /// `variables`: the next step written is keptSteps + 1 (later steps already
+  /// in the file are overwritten as the run goes on). Throws InputError if the
+  /// file cannot be opened or does not match the mesh, the variables or holds
+  /// fewer than keptSteps steps.
+  ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusVariables& variables, int keptSteps);
   ~ExodusWriter();  ///< closes the file; never throws
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;

@@ -54,9 +54,24 @@ struct StepInfo {
   bool fold = false;    ///< a fold of the load path (located by continuation), where a jump starts
 };
 
+/// Where the stepper stands after an accepted state: enough, with that state
+/// and the one before it, to go on exactly as an uninterrupted run would
+/// (a checkpoint, see run()).
+struct StepperState {
+  std::size_t segment = 1;  ///< the waypoint being approached (index into the path)
+  Real load = 0.0;          ///< u of the accepted state
+  Real increment = 0.0;     ///< the next step's increment
+  int step = 0;             ///< accepted states so far
+  bool havePrevious = false;  ///< the secant predictor has a state before this one
+  Real previousLoad = 0.0;    ///< u of that state
+};
+
 class LoadStepper {
  public:
   using Observer = std::function<void(const StepInfo&, const Vector& u)>;
+  /// Called after the observer with the stepper's state, the accepted state
+  /// and the state before it (meaningful when state.havePrevious).
+  using CheckpointSink = std::function<void(const StepperState&, const Vector& u, const Vector& previous)>;
   /// Tells whether a converged step stayed on the branch it started from
   /// (true) or jumped to another one (false). Default: always continuous.
   using ContinuityCheck = std::function<bool(const Vector& before, const Vector& after)>;
@@ -70,7 +85,13 @@ class LoadStepper {
   /// after every accepted state. Throws NumericalError, naming the step, u and
   /// the reason, if a step fails below the minimum increment or the jump
   /// fails (everything observed so far stays valid).
-  void run(Vector& u, const Observer& observer);
+  void run(Vector& u, const Observer& observer) { run(u, observer, {}, nullptr, nullptr); }
+  /// The same, calling `checkpoint` after every accepted state of the path
+  /// (not the folds reported on the way of a jump); with `resume`, u is the
+  /// accepted state of `resume` (and `previous` the one before it) and the
+  /// path goes on from there without solving the initial state again.
+  void run(Vector& u, const Observer& observer, const CheckpointSink& checkpoint, const StepperState* resume,
+           const Vector* previous);
 
   void setContinuityCheck(ContinuityCheck check) { continuous_ = std::move(check); }
 

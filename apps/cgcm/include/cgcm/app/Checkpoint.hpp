@@ -1,0 +1,54 @@
+#pragma once
+// checkpoint.bin: the last accepted state of a displacement-controlled run,
+// enough for `cgcm --restart OUTPUT_DIR` to go on exactly where it stood:
+// the load stepper's state (segment, u, next increment, step count, the
+// secant predictor's previous state), the continuity check's last load, the
+// load-curve rows so far, the Exodus steps written, and the displacement
+// vectors (by global dof). Written by rank 0 after every accepted state,
+// through a temporary file and a rename, so a run killed at any moment
+// leaves either the previous checkpoint or the new one, never a torn file.
+#include <string>
+#include <vector>
+
+#include "cgcm/app/Simulation.hpp"
+#include "cgcm/assembly/TpetraTypes.hpp"
+#include "cgcm/solver/LoadStepper.hpp"
+
+namespace cgcm::app {
+
+struct Checkpoint {
+  solver::StepperState stepper;
+  Real lastLoad = 0.0;  ///< the continuity check's reference load
+  int exodusSteps = 0;  ///< steps in results.e (0 without Exodus output)
+  std::vector<LoadPoint> curve;
+  std::vector<Real> u, previous;  ///< by global dof (previous: empty unless stepper.havePrevious)
+};
+
+/// The file in `dir`.
+std::string checkpointPath(const std::string& dir);
+
+/// Writes atomically (rank 0 only). False if the disk refused (the previous
+/// checkpoint, if any, is left as it was).
+bool writeCheckpoint(const std::string& dir, const Checkpoint& c);
+
+/// Reads the checkpoint of `dir` (every rank reads the file). Throws
+/// InputError naming the file if it is missing, truncated or of another format.
+Checkpoint readCheckpoint(const std::string& dir);
+
+/// A distributed vector gathered on rank 0 in global dof order, and back.
+class RootGather {
+ public:
+  explicit RootGather(const Teuchos::RCP<const assembly::Map>& owned);
+  /// All values on rank 0, empty elsewhere. Collective.
+  std::vector<Real> gather(const assembly::Vector& x);
+  /// x from `values` given on rank 0 (ignored elsewhere). Collective.
+  void scatter(const std::vector<Real>& values, assembly::Vector& x);
+  /// The gathered vector of the last gather (rank 0: every dof).
+  const assembly::Vector& all() const { return *all_; }
+
+ private:
+  Teuchos::RCP<const assembly::Import> import_;
+  Teuchos::RCP<assembly::Vector> all_;
+};
+
+}  // namespace cgcm::app

@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Runs a deck to the end (the reference), runs it again and kills it with
+SIGKILL once load_curve.csv holds a given share of the reference's rows,
+checks that the killed run's summary says "running", continues it with
+`cgcm --restart DIR`, and compares the continued run's load_curve.csv,
+body_forces.csv (compare_csv.py) and results.e (exo_compare) with the
+reference's. Exit 0 if all agree.
+
+usage: kill_and_restart.py --cgcm CGCM --exo-compare EXO --output DIR [--at 0.5] [--rel 1e-8] -- DECK [overrides...]
+"""
+import argparse
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def rows(path):
+    try:
+        with open(path) as f:
+            return sum(1 for _ in f) - 1
+    except FileNotFoundError:
+        return 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--cgcm", required=True)
+    ap.add_argument("--exo-compare", required=True)
+    ap.add_argument("--output", required=True)
+    ap.add_argument("--at", type=float, default=0.5, help="share of the reference's rows at the kill")
+    ap.add_argument("--rel", type=float, default=1e-8)
+    ap.add_argument("--timeout", type=float, default=300.0)
+    ap.add_argument("args", nargs="+", help="deck and overrides")
+    a = ap.parse_args()
+    reference, killed = os.path.join(a.output, "reference"), os.path.join(a.output, "killed")
+    for d in (reference, killed):
+        shutil.rmtree(d, ignore_errors=True)
+    quiet = dict(stdout=subprocess.DEVNULL)
+    r = subprocess.run([a.cgcm] + a.args + ["Output/Directory=" + reference], timeout=a.timeout, **quiet)
+    if r.returncode != 0:
+        sys.exit(f"kill_and_restart: the reference run failed (exit {r.returncode})")
+    total = rows(os.path.join(reference, "load_curve.csv"))
+    at = max(1, int(a.at * total))
+
+    run = subprocess.Popen([a.cgcm] + a.args + ["Output/Directory=" + killed], **quiet)
+    start = time.time()
+    while rows(os.path.join(killed, "load_curve.csv")) < at:
+        if run.poll() is not None:
+            sys.exit(f"kill_and_restart: the run ended (exit {run.returncode}) before {at} rows")
+        if time.time() - start > a.timeout:
+            run.kill()
+            sys.exit("kill_and_restart: the run did not reach the kill point in time")
+        time.sleep(0.005)
+    run.send_signal(signal.SIGKILL)
+    run.wait()
+    with open(os.path.join(killed, "summary.txt")) as f:
+        status = f.readline().strip()
+    print(f"killed at {rows(os.path.join(killed, 'load_curve.csv'))} of {total} rows; summary: {status}")
+    if not status.startswith("running"):
+        sys.exit(f"kill_and_restart: the killed run's summary says \"{status}\", not \"running\"")
+
+    r = subprocess.run([a.cgcm, "--restart", killed, "Output/Print Steps=false"], timeout=a.timeout, **quiet)
+    if r.returncode != 0:
+        sys.exit(f"kill_and_restart: cgcm --restart failed (exit {r.returncode})")
+    with open(os.path.join(killed, "summary.txt")) as f:
+        status = f.readline().strip()
+    if status != "completed":
+        sys.exit(f"kill_and_restart: the continued run's summary says \"{status}\"")
+    compare = [sys.executable, os.path.join(HERE, "compare_csv.py")]
+    failed = False
+    for name, columns in (("load_curve.csv", "step,u,P,gap,contact_radius,P_lower,stable,fold,jump"),
+                          ("body_forces.csv", "step,u,body,Fx,Fy,Fz")):
+        r = subprocess.run(compare + [os.path.join(reference, name), os.path.join(killed, name), "--columns", columns,
+                                      "--rel", str(a.rel)])
+        failed |= r.returncode != 0
+    r = subprocess.run([a.exo_compare, "--rel", str(a.rel), os.path.join(reference, "results.e"),
+                        os.path.join(killed, "results.e")])
+    failed |= r.returncode != 0
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
