@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "cgcm/app/SizeEstimate.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/Normalisation.hpp"
 #include "cgcm/io/Deck.hpp"
@@ -262,6 +263,10 @@ RCP<const ParameterList> validParameters() {
   output.set("Exodus", true,
              "write results.e (Exodus II: displacement, stress and interaction traction fields per load-curve row; "
              "ParaView)");
+  output.set("Max Memory", 0.0,
+             "MB a run may use; a deck whose estimated memory (mesh size, measured per-unknown cost of the "
+             "solver) exceeds it is refused before any work. 0: the memory this machine has available",
+             atLeast(0.0));
   output.set("Checkpoint", true,
              "write checkpoint.bin after every accepted state (displacement control), so that "
              "`cgcm --restart <Directory>` can continue a run that was killed");
@@ -775,8 +780,14 @@ ProblemSetup buildProblem(const ParameterList& deck) {
 
   const auto& geometry = deck.sublist("Geometry");
   const std::string type = geometry.get<std::string>("Type");
+  // absurd sizes are refused before the mesh is allocated (mesh files: once read)
+  const MemoryLimit memory = memoryLimit(deck.sublist("Output"));
+  if (const auto size = estimateBuiltInMesh(deck, s.formulation))
+    checkSize(*size, memory, type == "block" ? "Geometry/Block/Cells X, Y, Z" : "Geometry/Mesh Refinement");
   if (type == "gmsh") {
     buildFromGmsh(deck, s);
+    checkSize(estimateSize(s.mesh->numNodes(), s.mesh->numCells(), s.formulation), memory,
+              "Geometry/File \"" + geometry.get<std::string>("File") + "\"");
   } else if (type != "block") {
     buildSphereContact(deck, s);
   } else {
