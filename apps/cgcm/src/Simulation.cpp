@@ -88,7 +88,8 @@ Real runawayBound(const PathPlan& plan, const std::vector<Real>& waypoints, Real
 }  // namespace
 
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
-                        std::ostream& log, bool restart) {
+                        std::ostream& log, RunMode mode) {
+  const bool restart = mode == RunMode::Restart, checkOnly = mode == RunMode::Check;
   const bool root = comm->getRank() == 0;
   const auto& out = deck.sublist("Output");
   const std::string dir = out.get<std::string>("Directory");
@@ -120,6 +121,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   createOnRoot(*comm, [&] {
     if (restart) return;  // the folder and its parameters.xml are the run's own
+    if (checkOnly) {
+      if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
+        throw InputError("Output/Directory = \"" + dir + "\": cannot create it (a file of that name exists)");
+      return;
+    }
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir))
@@ -149,6 +155,18 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
     log << "cgcm: a state is accepted when |f|_2 <= " << newtonSettings.tolerance() << " (Residual Tolerance "
         << newtonSettings.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
+  }
+
+  if (checkOnly) {
+    Vector u(model->map());
+    model->setLoad(plan.path.path.front());
+    if (plan.arcLength || plan.parameter != "u") continuation.validate(u);
+    RunResult checked;
+    checked.completed = true;
+    checked.numNodes = std::size_t(setup.mesh->numNodes());
+    checked.numCells = std::size_t(setup.mesh->numCells());
+    checked.numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
+    return checked;
   }
 
   // The summary says what the run is doing until it ends.

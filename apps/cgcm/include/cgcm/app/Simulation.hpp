@@ -41,6 +41,7 @@ struct RunResult {
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
   std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
+  std::size_t numNodes = 0, numCells = 0, numDofs = 0;  ///< the problem's size
 };
 
 /// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,
@@ -48,9 +49,12 @@ struct RunResult {
 /// progress on rank 0 to `log`. Throws
 /// InputError for inconsistent input before any work; a run the solver stops
 /// returns completed = false with the reason. Collective.
-/// restart: continue the run of Output/Directory from its checkpoint.bin
-/// (displacement control only; InputError otherwise or without a checkpoint).
+enum class RunMode {
+  Run,      ///< the whole load path
+  Restart,  ///< continue the run of Output/Directory from its checkpoint.bin (displacement control only)
+  Check     ///< every check and the problem's set-up, no file written, nothing solved (result.completed = true)
+};
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
-                        std::ostream& log, bool restart = false);
+                        std::ostream& log, RunMode mode = RunMode::Run);
 
 }  // namespace cgcm::app
