@@ -123,6 +123,14 @@ def make_inputs(src, workdir, count, rng):
         deck = rng.choice(decks)
         path = os.path.join(workdir, "inputs", f"{k:06d}.xml")
         text = open(deck, "rb").read()
+        try:  # mesh files named relative to the deck stay found from the work folder
+            root = ET.fromstring(text)
+            for p in root.findall(".//Parameter[@name='File']"):
+                if not os.path.isabs(p.get("value", "")):
+                    p.set("value", os.path.normpath(os.path.join(os.path.dirname(deck), p.get("value", ""))))
+            text = ET.tostring(root)
+        except ET.ParseError:
+            pass
         choice = rng.random()
         if choice < 0.15:
             data = mutate_bytes(text, rng)
@@ -245,6 +253,10 @@ def main():
     with futures.ThreadPoolExecutor(a.jobs) as pool:
         for deck, r in zip(sample, pool.map(lambda d: full_run(a.cgcm, d, a.workdir, a.run_limit), sample)):
             runs[deck] = r
+    with open(os.path.join(a.workdir, "results.tsv"), "w") as f:  # every input's outcome, for reading
+        for label, table in (("check", results), ("run", runs)):
+            for deck, (code, message) in sorted(table.items()):
+                f.write(f"{label}\t{deck}\t{code}\t{message}\n")
     failures = []
     for label, table in (("check", results), ("run", runs)):
         for deck, (code, message) in table.items():

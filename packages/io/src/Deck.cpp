@@ -7,6 +7,7 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -21,6 +22,21 @@ std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t");
   const auto e = s.find_last_not_of(" \t");
   return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+// Teuchos' exception texts carry the source file, the throw count and the
+// failed test before the message: keep the message, on one line.
+std::string teuchosMessage(const std::string& what) {
+  std::string out, line;
+  for (std::istringstream in(what); std::getline(in, line);) {
+    line = trim(line);
+    if (line.empty() || line.rfind("Throw number", 0) == 0 || line.rfind("Throw test", 0) == 0 ||
+        line.find_first_not_of('-') == std::string::npos ||
+        (line.back() == ':' && (line.find(".cpp:") != std::string::npos || line.find(".hpp:") != std::string::npos)))
+      continue;
+    out += (out.empty() ? "" : " ") + line;
+  }
+  return out.empty() ? trim(what) : out;
 }
 
 long parseInteger(const std::string& path, const std::string& text) {
@@ -42,14 +58,33 @@ void checkXmlNumbers(const Teuchos::XMLObject& node, const std::string& prefix) 
       checkXmlNumbers(child, path + "/");
       continue;
     }
-    if (child.getTag() != "Parameter" || !child.hasAttribute("type") || !child.hasAttribute("value")) continue;
+    if (child.getTag() != "Parameter")
+      throw InputError(path + ": <" + child.getTag() + "> is not an element of a deck; use <Parameter> or <ParameterList>");
+    if (!child.hasAttribute("type") || !child.hasAttribute("value"))
+      throw InputError(path + ": a <Parameter> needs name, type and value attributes");
     const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
+    static const char* known[] = {"double", "int", "bool", "string", "Array(double)", "Array(int)", "Array(string)"};
+    if (std::find(std::begin(known), std::end(known), type) == std::end(known))
+      throw InputError(path + ": type \"" + type + "\" is not one a deck uses; allowed: double, int, bool, string, "
+                       "Array(double), Array(int), Array(string)");
     if (type == "double") parseDouble(path, value);
     if (type == "int") parseInteger(path, value);
-    if (type == "Array(double)" || type == "Array(int)") {
-      const auto open = value.find('{'), close = value.rfind('}');
-      if (open == std::string::npos || close == std::string::npos || close < open)
+    if (type == "bool") {
+      std::string b = trim(value);
+      for (char& c : b) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (b != "true" && b != "false" && b != "1" && b != "0")
+        throw InputError(path + ": \"" + value + "\" is not true or false");
+    }
+    if (type == "Array(string)") {
+      const std::string t = trim(value);
+      if (t.size() < 2 || t.front() != '{' || t.back() != '}')
         throw InputError(path + ": \"" + value + "\" is not an array; write {a, b, c}");
+    }
+    if (type == "Array(double)" || type == "Array(int)") {
+      const std::string t = trim(value);
+      if (t.size() < 2 || t.front() != '{' || t.back() != '}')
+        throw InputError(path + ": \"" + value + "\" is not an array; write {a, b, c}");
+      const auto open = value.find('{'), close = value.rfind('}');
       std::stringstream items(value.substr(open + 1, close - open - 1));
       for (std::string item; std::getline(items, item, ',');)
         if (!trim(item).empty()) type == "Array(double)" ? void(parseDouble(path, item)) : void(parseInteger(path, item));
@@ -122,6 +157,78 @@ std::string entryNames(const Teuchos::ParameterList& list) {
   return names;
 }
 
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "<path>: unknown parameter (did you mean "<nearest>"?); allowed in <group>: ..."
+InputError unknownName(const std::string& path, const std::string& name, const Teuchos::ParameterList& valid,
+                       const std::string& prefix, bool group) {
+  const std::string where = prefix.empty() ? "at the top of the deck" : "in " + prefix.substr(0, prefix.size() - 1);
+  std::string nearest;
+  std::size_t best = 3;
+  for (auto v = valid.begin(); v != valid.end(); ++v)
+    if (const std::size_t d = editDistance(name, valid.name(v)); d < best) best = d, nearest = valid.name(v);
+  return InputError(path + ": unknown " + (group ? "parameter group" : "parameter") +
+                    (nearest.empty() ? "" : " (did you mean \"" + nearest + "\"?)") + "; allowed " + where + ": " +
+                    entryNames(valid));
+}
+
+// Unknown names (with the nearest valid one), and a value where a group of
+// parameters belongs or the reverse. Groups handed to a library as they are
+// (LOCA, Stratimikos: no valid entries of their own) are left to it.
+void checkNamesAndKinds(const Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
+                        const std::string& prefix) {
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string name = deck.name(it), path = prefix + name;
+    const bool group = deck.isSublist(name);
+    if (!valid.isParameter(name)) throw unknownName(path, name, valid, prefix, group);
+    if (valid.isSublist(name) && !group)
+      throw InputError(path + ": a group of parameters (<ParameterList name=\"" + name + "\">) belongs here, not a value");
+    if (!valid.isSublist(name) && group)
+      throw InputError(path + ": a single <Parameter> belongs here, not a group of parameters");
+    if (group && valid.sublist(name).numParams() > 0) checkNamesAndKinds(deck.sublist(name), valid.sublist(name), path + "/");
+  }
+}
+
+std::string typeName(const Teuchos::ParameterEntry& e) {
+  if (e.isType<double>()) return "double";
+  if (e.isType<int>()) return "int";
+  if (e.isType<bool>()) return "bool";
+  if (e.isType<std::string>()) return "string";
+  if (e.isType<Teuchos::Array<double>>()) return "Array(double)";
+  if (e.isType<Teuchos::Array<int>>()) return "Array(int)";
+  if (e.isType<Teuchos::Array<std::string>>()) return "Array(string)";
+  return e.getAny().typeName();
+}
+
+// After normaliseNumbers: every value of the type its parameter has.
+void checkTypes(const Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& prefix) {
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string name = deck.name(it), path = prefix + name;
+    if (deck.isSublist(name)) {
+      if (valid.sublist(name).numParams() > 0) checkTypes(deck.sublist(name), valid.sublist(name), path + "/");
+      continue;
+    }
+    const auto& e = deck.getEntry(name);
+    const auto& v = valid.getEntry(name);
+    if (e.getAny().type() != v.getAny().type())
+      throw InputError(path + ": given as " + typeName(e) + ", expected " + typeName(v) +
+                       (v.isType<Teuchos::Array<double>>() ? " (e.g. value=\"{-0.02, 0.06}\")" : ""));
+  }
+}
+
 }  // namespace
 
 double parseDouble(const std::string& path, const std::string& text) {
@@ -141,13 +248,23 @@ double parseDouble(const std::string& path, const std::string& text) {
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
   std::ifstream probe(path);
   if (!probe) throw InputError("cannot read the input deck \"" + path + "\"");
+  // The XML and every value are checked here, with the parameter's path,
+  // before Teuchos converts them (it reads a bad number as 0).
+  Teuchos::XMLObject xml;
+  try {
+    xml = Teuchos::FileInputSource(path).getObject();
+  } catch (const std::exception& e) {
+    throw InputError("input deck \"" + path + "\" is not valid XML: " + teuchosMessage(e.what()));
+  }
+  if (xml.getTag() != "ParameterList")
+    throw InputError("input deck \"" + path + "\": the outer element is <" + xml.getTag() + ">, not <ParameterList>");
+  checkXmlNumbers(xml, "");
   Teuchos::RCP<Teuchos::ParameterList> deck;
   try {
     deck = Teuchos::getParametersFromXmlFile(path);
   } catch (const std::exception& e) {
-    throw InputError("input deck \"" + path + "\" is not a valid XML parameter list: " + e.what());
+    throw InputError("input deck \"" + path + "\" is not a valid parameter list: " + teuchosMessage(e.what()));
   }
-  checkXmlNumbers(Teuchos::FileInputSource(path).getObject(), "");
   return deck;
 }
 
@@ -172,9 +289,9 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
         prefix += parts[i] + "/";
         continue;
       }
+      if (!v->isParameter(parts[i])) throw unknownName(prefix + parts[i], parts[i], *v, prefix, true);
       if (!v->isSublist(parts[i]))
-        throw InputError("override " + path + ": \"" + prefix + parts[i] + "\" is not a parameter group; valid at " +
-                         (prefix.empty() ? "top level" : prefix) + ": " + entryNames(*v));
+        throw InputError(prefix + parts[i] + ": a single parameter, not a group (in the override " + path + ")");
       v = &v->sublist(parts[i]);
       d = &d->sublist(parts[i]);
       prefix += parts[i] + "/";
@@ -199,9 +316,11 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
         d->set(name, text);
       continue;
     }
-    if (!v->isParameter(name) || v->isSublist(name))
-      throw InputError("override " + path + ": unknown parameter \"" + name + "\"; valid in " +
-                       (prefix.empty() ? "top level" : prefix) + ": " + entryNames(*v));
+    if (!v->isParameter(name)) throw unknownName(path, name, *v, prefix, false);
+    if (v->isSublist(name))
+      throw InputError(path + ": a group of parameters; give one of its parameters, e.g. " + path + "/" +
+                       (v->sublist(name).numParams() > 0 ? v->sublist(name).name(v->sublist(name).begin()) : "name") +
+                       "=value");
     const Teuchos::ParameterEntry& entry = v->getEntry(name);
     if (entry.isType<double>()) {
       d->set(name, parseDouble(path, text));
@@ -228,15 +347,15 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
 }
 
 void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid) {
+  checkNamesAndKinds(deck, valid, "");
   normaliseNumbers(deck, valid, "");
+  checkTypes(deck, valid, "");
   try {
     deck.validateParametersAndSetDefaults(valid);
-  } catch (const Teuchos::Exceptions::InvalidParameter& e) {
-    // Teuchos' messages name the parameter, its sublist and the valid choices;
-    // drop the source location and throw bookkeeping in front of that.
-    std::string what = e.what();
-    const auto start = what.find("The \"");
-    if (start != std::string::npos) what = what.substr(start);
+  } catch (const std::exception& e) {
+    // what the checks above do not catch: Teuchos' message, on one line
+    std::string what = teuchosMessage(e.what());
+    for (std::string::size_type at; (at = what.find("ANONYMOUS->")) != std::string::npos;) what.erase(at, 11);
     throw InputError("invalid input deck: " + what);
   }
 }
