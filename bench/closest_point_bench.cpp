@@ -26,7 +26,7 @@ double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::d
 
 // nl x nt latitude-longitude triangulation of the unit sphere (2 nl nt triangles, poles included).
 mesh::Surface sphere(int nl, int nt, std::vector<Real>& coords) {
-  const Real pi = std::acos(-1.0);
+  const Real pi = kPi;
   mesh::Surface s;
   s.nodesPerFacet = 3;
   coords = {0.0, 0.0, 1.0, 0.0, 0.0, -1.0};
@@ -90,7 +90,7 @@ int main() {
     run("3D triangles, CGAL AABB tree", *tree, coords, s, q, cutoff);
   }
   for (int n : {10000, 100000}) {
-    const Real pi = std::acos(-1.0);
+    const Real pi = kPi;
     std::vector<Real> coords, q;
     mesh::Surface s;
     s.nodesPerFacet = 2;

@@ -165,8 +165,8 @@ void ResultsWriter::traction(const std::vector<Real>& u, io::ExodusWriter::Field
         const Real tx = x[2 * n[1]] - x[2 * n[0]], ty = x[2 * n[1] + 1] - x[2 * n[0] + 1];
         const Real length = std::hypot(tx, ty);
         // share of each node: integral of N_a (times 2 pi r in axisymmetry)
-        const Real a0 = axisymmetric ? 2.0 * M_PI * length * (2.0 * x[2 * n[0]] + x[2 * n[1]]) / 6.0 : 0.5 * length;
-        const Real a1 = axisymmetric ? 2.0 * M_PI * length * (x[2 * n[0]] + 2.0 * x[2 * n[1]]) / 6.0 : 0.5 * length;
+        const Real a0 = axisymmetric ? 2.0 * kPi * length * (2.0 * x[2 * n[0]] + x[2 * n[1]]) / 6.0 : 0.5 * length;
+        const Real a1 = axisymmetric ? 2.0 * kPi * length * (x[2 * n[0]] + 2.0 * x[2 * n[1]]) / 6.0 : 0.5 * length;
         area[n[0]] += a0, area[n[1]] += a1;
         for (int a = 0; a < 2; ++a) normal[2 * n[a]] += ty, normal[2 * n[a] + 1] -= tx;  // outward, length-weighted
         continue;

@@ -340,7 +340,7 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
                         std::pow(phys.r0, 3);
   const Real Estar = Y / (2.0 * (1.0 - nu * nu));
   const Real tabor = std::cbrt(reducedRadius * w * w / (Estar * Estar * rS0 * rS0 * rS0));
-  const Real lambda = sigmaMax * std::cbrt(9.0 * reducedRadius / (2.0 * M_PI * w * Estar * Estar));
+  const Real lambda = sigmaMax * std::cbrt(9.0 * reducedRadius / (2.0 * kPi * w * Estar * Estar));
   // The force unit of the paper, E0/R0 = Y R0^2 (per unit thickness: Y R0), is
   // the scale of the convergence test: the round-off floor of the residual
   // comes from the bulk (about 3e-12 Y R0^2 on the level-0 benchmark mesh).
@@ -374,7 +374,7 @@ InteractionSetup buildInteraction(const ParameterList& in, Real R0, Real Y, Real
   report.push_back(o.str());
   o.str("");
   o << "Lennard-Jones scales (of its r0 and epsilon, whatever the potential): Tabor mu = " << tabor << ", Maugis-Dugdale lambda (theory) = " << lambda
-    << ", 2 pi w R = " << 2 * M_PI * w * reducedRadius << ", 1.5 pi w R = " << 1.5 * M_PI * w * reducedRadius
+    << ", 2 pi w R = " << 2 * kPi * w * reducedRadius << ", 1.5 pi w R = " << 1.5 * kPi * w * reducedRadius
     << " (R = " << reducedRadius << ")";
   report.push_back(o.str());
   o.str("");
@@ -818,7 +818,7 @@ ProblemSetup buildProblem(const ParameterList& deck) {
       if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
       s.load = {"top", 1, 1.0};
       const Real Y = s.material.youngsModulus();
-      s.forceScale = s.formulation == assembly::Formulation::Axisymmetric ? Y * M_PI * spec.lx * spec.lx : Y * spec.lx;
+      s.forceScale = s.formulation == assembly::Formulation::Axisymmetric ? Y * kPi * spec.lx * spec.lx : Y * spec.lx;
     }
     if (b.get<double>("Distortion") > 0.0)
       mesh::perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));

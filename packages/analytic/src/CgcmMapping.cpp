@@ -7,7 +7,6 @@
 
 namespace cgcm::analytic {
 namespace {
-constexpr Real kPi = 3.14159265358979323846;
 }
 
 Real workOfAdhesionFactor() {

@@ -13,7 +13,6 @@
 namespace cgcm::analytic {
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 // Band of uniform rings around the edge e (the outermost peak of the
 // tension), in units of ℓ: [e − ahead, e + outside] while the edge retracts,

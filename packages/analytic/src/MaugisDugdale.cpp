@@ -9,7 +9,6 @@
 namespace cgcm::analytic {
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 constexpr Real kEps = std::numeric_limits<Real>::epsilon();
 
 void requirePositive(const char* what, Real value) {

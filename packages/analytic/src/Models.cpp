@@ -9,7 +9,6 @@
 namespace cgcm::analytic {
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 void requireRadius(Real a) {
   if (!(std::isfinite(a) && a > 0)) {

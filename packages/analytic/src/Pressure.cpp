@@ -10,7 +10,6 @@
 
 namespace cgcm::analytic {
 namespace {
-constexpr Real kPi = 3.14159265358979323846;
 }
 
 PressureProfile::PressureProfile(const ContactModel& model, Real a)

@@ -11,7 +11,6 @@
 namespace cgcm::analytic {
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 
 /// s = r and s = r ± z·4ⁿ up to `reach`: the scales of the kernel spike,
 /// which has width ~z at s = r and tails ~z³/|r−s|⁴.

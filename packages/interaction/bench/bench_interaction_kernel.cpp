@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 4000;
   const int reps = argc > 2 ? std::atoi(argv[2]) : 20;
   const double smoothing = argc > 3 ? std::atof(argv[3]) : -1.0;  // < 0: the default
-  const Real pi = std::acos(-1.0);
+  const Real pi = kPi;
   const Real R = 100.0, r0 = 1.0;
   auto lj = std::make_shared<LennardJones>(1.0, r0);
   const Real h0 = *lj->surfaceEquilibriumDistance();

@@ -14,10 +14,6 @@
 
 namespace cgcm::interaction {
 
-namespace {
-const Real kPi = std::acos(-1.0);
-}
-
 PairPotential::PairPotential(Real epsilon, Real r0) : epsilon_(epsilon), r0_(r0) {
   if (!(epsilon > 0.0) || !std::isfinite(epsilon)) {
     std::ostringstream os;

@@ -13,7 +13,7 @@ GaussRule gaussLegendreUnit(int n) {
   GaussRule rule;
   rule.points.resize(n);
   rule.weights.resize(n);
-  const Real pi = std::acos(-1.0);
+  const Real pi = kPi;
   // P_n(x) and P_n'(x) by the three-term recurrence.
   auto legendre = [n](Real x, Real& p, Real& dp) {
     Real p0 = 1.0, p1 = x;

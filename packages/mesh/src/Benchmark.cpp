@@ -95,10 +95,10 @@ Mesh quarterDisk(const QuarterDiskSpec& s) {
   if (!(s.fineAngle > 0.0 && s.fineAngle < 0.7)) throw InputError("quarter disk: fine angle must be in (0, 0.7)");
   const int L = s.refinement;
   // Polar angle from the apex: patch B spans [0, pi/4], patch C [pi/4, pi/2].
-  const std::vector<Real> thetaB = fineThenGeometric(M_PI / 4, s.fineAngle, scaled(16, L), scaled(8, L));
+  const std::vector<Real> thetaB = fineThenGeometric(kPi / 4, s.fineAngle, scaled(16, L), scaled(8, L));
   const int nB = int(thetaB.size()) - 1, nC = scaled(8, L);
   std::vector<Real> thetaC(nC + 1);
-  for (int j = 0; j <= nC; ++j) thetaC[j] = M_PI / 4 + (M_PI / 4) * j / nC;
+  for (int j = 0; j <= nC; ++j) thetaC[j] = kPi / 4 + (kPi / 4) * j / nC;
   // Radial layers of the curved patches, finest at the surface: t in [0, 1] from core to surface.
   const Real core = 0.5;
   const int nR = scaled(14, L);

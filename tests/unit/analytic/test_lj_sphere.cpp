@@ -16,7 +16,7 @@ using cgcm::Real;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
+using cgcm::kPi;
 
 /// Ring count of the pull-off tests: P_min is converged to about 1e-4 there
 /// (see Convergence), and a run at μ = 10 takes about 2 s.

@@ -21,7 +21,7 @@ using cgcm::Real;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
+using cgcm::kPi;
 
 std::string tempPath(const std::string& name) {
   const char* dir = std::getenv("TMPDIR");

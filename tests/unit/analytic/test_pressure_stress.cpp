@@ -14,7 +14,7 @@ using cgcm::Real;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
+using cgcm::kPi;
 
 std::vector<an::ContactModel> allModels() {
   std::vector<an::ContactModel> m = {an::ContactModel::hertz(), an::ContactModel::jkr(),

@@ -14,7 +14,7 @@
 
 namespace cgcm::interaction::testing {
 
-constexpr Real kPi = 3.14159265358979323846;
+using cgcm::kPi;
 
 /// Appends the open polyline through `points` (x, y pairs) to `coords` and
 /// returns its surface (segments i -> i+1, body on the left of each).

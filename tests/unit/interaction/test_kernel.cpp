@@ -22,7 +22,6 @@ namespace {
 using Fad = Sacado::Fad::SFad<Real, 8>;
 
 constexpr Real kBeta1 = 1.5, kBeta2 = 0.8;
-constexpr Real kPiForTest = 3.14159265358979323846;
 constexpr Real kNoCutoff = std::numeric_limits<Real>::infinity();
 
 struct Case {
@@ -85,7 +84,7 @@ void checkCase(const Case& c, const PairPotential& pot) {
     // forward AD of the generic residual over the 8 coordinates
     Fad zf[8], ff[4];
     for (int j = 0; j < 8; ++j) zf[j] = Fad(8, j, c.z[j]);
-    const Real C = kBeta1 * kBeta2 * 3.14159265358979323846 * pot.epsilon() * std::pow(pot.r0(), 3);
+    const Real C = kBeta1 * kBeta2 * kPi * pot.epsilon() * std::pow(pot.r0(), 3);
     const bool repulsiveOnly = pot.name() == "repulsive";
     auto traction = [&](const Fad& r) {
       const Fad s = pot.r0() / r;
@@ -207,7 +206,7 @@ TEST(SurfaceInteractionCutoff, NeglectedWorkOfTheTaperedCutoff) {
   const LennardJones lj(1.0, 1.0);
   const Real w = lj.adhesionWorkCoefficient();
   const Real rc = 10.0;
-  const Real farField = (kPiForTest / 6.0) / (rc * rc) / w;
+  const Real farField = (kPi / 6.0) / (rc * rc) / w;
   const Real sharp = neglectedWorkFraction(lj, rc, rc);
   EXPECT_NEAR(sharp, farField, 1e-3 * farField);  // the r^-9 term adds 1e-6 relative
   // the taper removes more, but less than a sharp cutoff at its start

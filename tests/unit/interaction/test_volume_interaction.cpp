@@ -24,8 +24,6 @@
 namespace cgcm::interaction {
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
-
 const InversePowerPair kInversePowers{1.3, 2.1};
 const MorsePair kMorse = MorsePair::matchedToLennardJones(0.8, 1.1);
 

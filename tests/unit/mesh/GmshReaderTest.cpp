@@ -205,7 +205,7 @@ TEST_F(Gmsh, QuarterDiscOnBlock) {
   EXPECT_EQ(nodeSetNames(m), (std::vector<std::string>{"apex", "axis", "contact:sphere", "contact:substrate", "driven",
                                                        "fixed", "lower apex"}));
   const auto volume = checkGeometry(m);
-  EXPECT_NEAR(volume[0], M_PI / 4, 0.01);  // inscribed polygon
+  EXPECT_NEAR(volume[0], cgcm::kPi / 4, 0.01);  // inscribed polygon
   EXPECT_NEAR(volume[1], 9.0, 1e-12);
   // contact surfaces: the arc and the block's top, 12 segments each
   EXPECT_EQ(m.surfaces[0].numFacets(), 12);
@@ -301,7 +301,7 @@ TEST_F(Gmsh, TetSphereOnBlock) {
   EXPECT_EQ(nodeSetNames(m), (std::vector<std::string>{"contact:sphere", "contact:substrate", "driven", "fixed",
                                                        "symmetry x", "symmetry y"}));
   const auto volume = checkGeometry(m);
-  EXPECT_NEAR(volume[0], M_PI / 6, 0.05 * M_PI / 6);  // a quarter of a hemisphere
+  EXPECT_NEAR(volume[0], cgcm::kPi / 6, 0.05 * cgcm::kPi / 6);  // a quarter of a hemisphere
   EXPECT_NEAR(volume[1], 1.5 * 1.5 * 1.0, 1e-12);
   for (const Surface& s : m.surfaces) EXPECT_EQ(s.nodesPerFacet, 3);
   const double zc = 1.05;

@@ -118,7 +118,7 @@ TEST(Benchmark, QuarterDiskIsValidAndConvergesToTheDisk) {
     const Mesh m = quarterDisk(s);
     const auto [area, smallest] = cellMeasures(m);
     EXPECT_GT(smallest, 0.0);
-    const double error = std::abs(area - M_PI / 4);
+    const double error = std::abs(area - cgcm::kPi / 4);
     EXPECT_LT(error, 2e-3);
     EXPECT_LT(error, 0.3 * previousError + 1e-15);  // second order: /4 per level
     previousError = error;
@@ -178,7 +178,7 @@ TEST(Benchmark, ContactZoneSetsTheFineCellsAlongAndUnderTheSurface) {
     d.fineAngle = 0.8 * zone;
     const Mesh disk = quarterDisk(d);
     EXPECT_GT(cellMeasures(disk).second, 0.0);
-    EXPECT_NEAR(cellMeasures(disk).first, M_PI / 4, 0.01);  // the coarse cells away from the zone are longer
+    EXPECT_NEAR(cellMeasures(disk).first, cgcm::kPi / 4, 0.01);  // the coarse cells away from the zone are longer
     // the surface segment at the apex and the apex's neighbour below it on the axis
     const LocalIndex tip = disk.nodeSet("apex").at(0);
     Real shortest = 1e300, step = 1e300;

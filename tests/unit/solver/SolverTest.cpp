@@ -60,7 +60,7 @@ const char* kFormulations[] = {"plane strain", "axisymmetric", "3D"};
 // Number of free lateral directions and the loaded area factor of the unit block.
 double loadedArea(const std::string& formulation, double lateralStretch) {
   if (formulation == "plane strain") return lateralStretch;                // width 1, unit thickness
-  if (formulation == "axisymmetric") return M_PI * lateralStretch * lateralStretch;  // disc of radius 1
+  if (formulation == "axisymmetric") return cgcm::kPi * lateralStretch * lateralStretch;  // disc of radius 1
   return lateralStretch * lateralStretch;                                  // 1 x 1 face
 }
 int lateralDirections(const std::string& formulation) { return formulation == "plane strain" ? 1 : 2; }
@@ -323,7 +323,7 @@ TEST(Interaction, UndeformedBenchmarkMeshGivesDerjaguinForceOnBothBodies) {
   si.updatePairs(s.mesh->coords);
   std::vector<interaction::PairContribution> out;
   si.evaluate(s.mesh->coords, out, false);
-  const double twoPiWR = 2 * M_PI * in.potential->workOfAdhesion(1.0, 1.0);
+  const double twoPiWR = 2 * cgcm::kPi * in.potential->workOfAdhesion(1.0, 1.0);
   const auto& r = si.summary().resultant;
   std::printf("resultants / 2 pi w R: sphere %.6f, half-space %.6f\n", r[0][1] / twoPiWR, r[1][1] / twoPiWR);
   EXPECT_NEAR(r[0][1] / twoPiWR, -0.9837, 0.005);

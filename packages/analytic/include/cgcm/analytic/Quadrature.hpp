@@ -160,7 +160,7 @@ struct EllipticKE {
 /// cancellation of (a_n − b_n)/2. Converges quadratically; k' → 0 (k → 1)
 /// costs about log₂ log(1/k') extra steps.
 inline EllipticKE ellipticKE(Real k2, Real kp2) {
-  constexpr Real pi = 3.14159265358979323846;
+  constexpr Real pi = kPi;
   Real a = 1;
   Real b = std::sqrt(kp2);
   Real c2 = k2;  // c_n²

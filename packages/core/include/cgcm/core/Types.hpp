@@ -10,4 +10,7 @@ using LocalIndex = int;
 /// Global index: matches Tpetra's global ordinal of the Debian build (long long).
 using GlobalIndex = long long;
 
+/// pi, the one definition of the code (usable in kernels).
+inline constexpr Real kPi = 3.14159265358979323846;
+
 }  // namespace cgcm

@@ -22,7 +22,7 @@ struct Axisymmetric {
   static constexpr bool axisymmetric = true;
   static constexpr const char* name = "Axisymmetric";
   /// 2π: the ring factor of dv = 2π r dA.
-  static constexpr Real ringFactor = 6.28318530717958647692;
+  static constexpr Real ringFactor = 2.0 * kPi;
 };
 
 struct ThreeD {

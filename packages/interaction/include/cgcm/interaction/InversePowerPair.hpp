@@ -42,7 +42,7 @@ struct InversePowerPair {
   }
 
   KOKKOS_INLINE_FUNCTION void halfSpace(Real r, Real& value, Real& derivative) const {
-    constexpr Real pi = 3.14159265358979323846;
+    constexpr Real pi = kPi;
     const Real i1 = 1.0 / r, i3 = i1 * i1 * i1, i9 = i3 * i3 * i3;
     const Real a = (pi / 45.0) * c12 * i9, b = (pi / 6.0) * c6 * i3;
     value = a - b;
@@ -50,7 +50,7 @@ struct InversePowerPair {
   }
 
   KOKKOS_INLINE_FUNCTION RadialLaw lineLaw(Real s) const {
-    constexpr Real pi = 3.14159265358979323846;
+    constexpr Real pi = kPi;
     const Real i1 = 1.0 / s, i2 = i1 * i1, root = std::sqrt(i1);
     return radialInversePowers(5.5, 2.5, c12 * (63.0 * pi / 256.0) * i2 * i2 * i1 * root,
                                c6 * (3.0 * pi / 8.0) * i2 * root, s);

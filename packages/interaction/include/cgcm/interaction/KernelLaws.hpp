@@ -58,7 +58,7 @@ struct AngleRule {
   static const AngleRule& get() {
     static const AngleRule rule = [] {
       using Rule = boost::math::quadrature::gauss<Real, kPoints>;
-      constexpr Real quarterPi = 0.78539816339744830962;
+      constexpr Real quarterPi = 0.25 * kPi;
       AngleRule r{};
       unsigned n = 0;
       for (std::size_t i = 0; i < Rule::abscissa().size(); ++i)
@@ -108,7 +108,7 @@ template <class P>
 RingLaw ringLawByQuadrature(const P& potential, Real p, Real q, bool withHessian) {
   RingLaw F{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const Real D = p * q, rD = std::sqrt(D);
-  constexpr Real twoOverPi = 0.63661977236758134308;
+  constexpr Real twoOverPi = 2.0 / kPi;
   const detail::AngleRule& rule = detail::AngleRule::get();
   for (unsigned k = 0; k < rule.kPoints; ++k) {
     const Real c2 = rule.c2[k], s2 = rule.s2[k], S = q * c2 + p * s2, iS = 1.0 / S;

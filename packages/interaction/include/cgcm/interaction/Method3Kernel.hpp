@@ -80,7 +80,7 @@ KOKKOS_INLINE_FUNCTION Real overshootBeyondEnd(const Real x[2], const Real a[2],
 template <Formulation Form, class Law>
 KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weight, const Law& law, Real f[4],
                                              Real (*K)[8], Real* Jr = nullptr) {
-  constexpr Real twoPi = 6.283185307179586476925286766559;
+  constexpr Real twoPi = 2.0 * kPi;
   PairState st;
   const Real N0 = 1.0 - xi, N1 = xi;
   const Real x[2] = {N0 * z[0] + N1 * z[2], N0 * z[1] + N1 * z[3]};
@@ -177,7 +177,7 @@ KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weig
 template <Formulation Form, class S, class TractionFn>
 void method3PairResidualGeneric(const S z[8], Real xi, Real weight, const TractionFn& traction, S f[4]) {
   using std::sqrt;
-  constexpr Real twoPi = 6.283185307179586476925286766559;
+  constexpr Real twoPi = 2.0 * kPi;
   const Real N0 = 1.0 - xi, N1 = xi;
   const S x0 = N0 * z[0] + N1 * z[2], x1 = N0 * z[1] + N1 * z[3];
   const S t0 = z[2] - z[0], t1 = z[3] - z[1];

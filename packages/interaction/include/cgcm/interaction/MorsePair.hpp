@@ -42,7 +42,7 @@ struct MorsePair {
   }
 
   KOKKOS_INLINE_FUNCTION void halfSpace(Real h, Real& value, Real& derivative) const {
-    constexpr Real twoPi = 6.28318530717958647693;
+    constexpr Real twoPi = 2.0 * kPi;
     const Real e = std::exp(-a * (h - r0)), a2 = a * a, a3 = a2 * a, ah = a * h;
     value = twoPi * eps * (e * e * (2.0 * ah + 2.0) / (8.0 * a3) - 2.0 * e * (ah + 2.0) / a3);
     derivative = twoPi * eps * (-e * e * (2.0 * ah + 1.0) / (4.0 * a2) + 2.0 * e * (ah + 1.0) / a2);

@@ -225,7 +225,7 @@ KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cel
       det = J0[0][0] * (J0[1][1] * J0[2][2] - J0[1][2] * J0[2][1]) -
             J0[0][1] * (J0[1][0] * J0[2][2] - J0[1][2] * J0[2][0]) +
             J0[0][2] * (J0[1][0] * J0[2][1] - J0[1][1] * J0[2][0]);
-    constexpr Real twoPi = 6.28318530717958647693;
+    constexpr Real twoPi = 2.0 * kPi;
     const int k = out.count++;
     out.W[k] = beta0 * w * jacobianScale * det * (axisymmetric ? twoPi * X[0] : 1.0);
     for (int a = 0; a < nn; ++a) out.N[k][a] = N[a];
