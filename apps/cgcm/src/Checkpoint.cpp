@@ -77,7 +77,9 @@ Checkpoint readCheckpoint(const std::string& dir) {
   if (!in)
     throw InputError("--restart " + dir + ": no checkpoint (" + path +
                      "): the run recorded no state, or Output/Checkpoint was false");
-  const auto size = std::filesystem::file_size(path);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError("--restart " + dir + ": cannot read " + path + " (" + ec.message() + ")");
   Checkpoint c;
   try {
     char magic[sizeof kMagic];

@@ -121,14 +121,17 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   createOnRoot(*comm, [&] {
     if (restart) return;  // the folder and its parameters.xml are the run's own
+    // the error_code forms: a name the file system refuses is bad input, not an exception
+    std::error_code ec;
     if (checkOnly) {
-      if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir))
-        throw InputError("Output/Directory = \"" + dir + "\": cannot create it (a file of that name exists)");
+      const bool exists = std::filesystem::exists(dir, ec);
+      if (ec || (exists && !std::filesystem::is_directory(dir, ec)))
+        throw InputError("Output/Directory = \"" + dir + "\": cannot create it (" +
+                         (ec ? ec.message() : "a file of that name exists") + ")");
       return;
     }
-    std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
+    if (ec || !std::filesystem::is_directory(dir, ec))
       throw InputError("Output/Directory = \"" + dir + "\": cannot create it (" +
                        (ec ? ec.message() : "a file of that name exists") + ")");
     io::writeDeck(deck, dir + "/parameters.xml");

@@ -45,7 +45,8 @@ Outcome runDeck(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const std::v
   const bool restart = mode == cgcm::app::RunMode::Restart;
   try {
     const std::string deckPath = restart ? args[0] + "/parameters.xml" : args[0];
-    if (restart && !std::filesystem::is_regular_file(deckPath))
+    std::error_code ec;
+    if (restart && !std::filesystem::is_regular_file(deckPath, ec))
       throw cgcm::InputError("--restart " + args[0] + ": not the output folder of a run (no parameters.xml)");
     auto deck = cgcm::io::readDeck(deckPath);
     cgcm::io::applyOverrides(*deck, *cgcm::app::validParameters(),
