@@ -36,7 +36,7 @@ sanitize: deps
 	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j$(JOBS) -L "unit|sanitize"
 
-# 10 000 mutated inputs through cgcm (tests/fuzz/fuzz_inputs.py; about 40
+# 10 000 mutated inputs through cgcm (tests/fuzz/fuzz_inputs.py; 26
 # minutes on 2 cores): no signal, no hang, a message for every refusal.
 FUZZ_COUNT ?= 10000
 fuzz: build
