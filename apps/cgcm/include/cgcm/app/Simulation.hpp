@@ -44,16 +44,17 @@ struct RunResult {
   std::size_t numNodes = 0, numCells = 0, numDofs = 0;  ///< the problem's size
 };
 
-/// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,
-/// results.e (unless Output/Exodus is false), summary.txt, parameters.xml}; prints
-/// progress on rank 0 to `log`. Throws
-/// InputError for inconsistent input before any work; a run the solver stops
-/// returns completed = false with the reason. Collective.
 enum class RunMode {
   Run,      ///< the whole load path
   Restart,  ///< continue the run of Output/Directory from its checkpoint.bin (displacement control only)
   Check     ///< every check and the problem's set-up, no file written, nothing solved (result.completed = true)
 };
+
+/// Runs the deck (validated, defaults filled). Writes Output/Directory/{load_curve.csv,
+/// body_forces.csv, results.e (unless Output/Exodus is false), checkpoint.bin (unless
+/// Output/Checkpoint is false), summary.txt, parameters.xml}; prints progress on rank 0
+/// to `log`. Throws InputError for inconsistent input before any work; a run the solver
+/// stops returns completed = false with the reason. Collective.
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
                         std::ostream& log, RunMode mode = RunMode::Run);
 
