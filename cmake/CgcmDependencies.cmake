@@ -11,10 +11,10 @@ add_library(cgcm_kokkos INTERFACE)
 target_include_directories(cgcm_kokkos SYSTEM INTERFACE ${Trilinos_INCLUDE_DIRS})
 target_link_libraries(cgcm_kokkos INTERFACE trilinos_kokkoscore MPI::MPI_CXX)
 
-# Teuchos only: parameter lists for packages that need no distributed objects.
+# Teuchos only: parameter lists and dense LAPACK for packages that need no distributed objects.
 add_library(cgcm_teuchos INTERFACE)
 target_include_directories(cgcm_teuchos SYSTEM INTERFACE ${Trilinos_INCLUDE_DIRS})
-target_link_libraries(cgcm_teuchos INTERFACE trilinos_teuchosparameterlist trilinos_teuchoscore trilinos_teuchoscomm
+target_link_libraries(cgcm_teuchos INTERFACE trilinos_teuchosparameterlist trilinos_teuchoscore trilinos_teuchoscomm trilinos_teuchosnumerics
                       trilinos_teuchosparser MPI::MPI_CXX)
 
 # The whole Trilinos stack: assembly, solver and io only.

@@ -79,6 +79,12 @@ std::string usageOf(const Command& c) {
   return out.str();
 }
 
+// The options of one command. Not Teuchos::CommandLineProcessor: measured on
+// Trilinos 13.2, it takes "--lambda=1abc" as 1 and "--n=2.7" as 2 without a
+// word, lets a repeated option win silently, accepts only "--name=value"
+// (the "--name value" of every script and document here fails) and aborts
+// with an uncaught exception on "--lambda=abc". This parser rejects all of
+// these with a message naming the option.
 class Args {
  public:
   Args(const Command& cmd, const std::vector<std::string>& argv) : cmd_(cmd) {

@@ -21,6 +21,7 @@
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
 #include "cgcm/solver/NewtonSolver.hpp"
+#include "cgcm/solver/ParameterValidators.hpp"
 
 namespace cgcm::app {
 
@@ -30,33 +31,11 @@ using Teuchos::rcp;
 
 namespace {
 
-RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
-  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
-}
-
-RCP<Teuchos::StringValidator> choices(const std::vector<std::string>& names) {
-  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
-}
-
-RCP<Teuchos::EnhancedNumberValidator<double>> atLeast(double min) {
-  auto v = rcp(new Teuchos::EnhancedNumberValidator<double>());
-  v->setMin(min);
-  return v;
-}
-
-RCP<Teuchos::EnhancedNumberValidator<double>> between(double min, double max) {
-  return rcp(new Teuchos::EnhancedNumberValidator<double>(min, max));
-}
-
-RCP<Teuchos::EnhancedNumberValidator<int>> intAtLeast(int min) {
-  auto v = rcp(new Teuchos::EnhancedNumberValidator<int>());
-  v->setMin(min);
-  return v;
-}
-
-RCP<Teuchos::EnhancedNumberValidator<int>> intBetween(int min, int max) {
-  return rcp(new Teuchos::EnhancedNumberValidator<int>(min, max));
-}
+using validators::atLeast;
+using validators::between;
+using validators::choices;
+using validators::intAtLeast;
+using validators::intBetween;
 
 }  // namespace
 
@@ -121,8 +100,8 @@ RCP<const ParameterList> validParameters() {
                atLeast(1e-300));
   geometry.set("Half-Space Size", 8.0, "width and depth of the half-space block, in sphere radii (>= 2)",
                atLeast(2.0));
-  auto refinement = rcp(new Teuchos::EnhancedNumberValidator<int>(0, 6));
-  geometry.set("Mesh Refinement", 0, "level 0 (about 1400 nodes) .. 6; each level halves every cell", refinement);
+  geometry.set("Mesh Refinement", 0, "level 0 (about 1400 nodes) .. 6; each level halves every cell",
+               intBetween(0, 6));
   geometry.set("Contact Zone Size", 0.5,
                "radial extent of the finest cells around the axis, in sphere radii (0.02 .. 0.85): 20 cells on "
                "the half-space and 16 on the sphere at level 0. Smaller zones resolve smaller contacts (large "

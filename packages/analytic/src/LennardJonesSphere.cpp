@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <Teuchos_LAPACK.hpp>
+
 #include "Numerics.hpp"
 #include "cgcm/core/Error.hpp"
 
@@ -104,57 +106,23 @@ std::vector<Real> influenceMatrix(const Mesh& m, Real coupling) {
   return c;
 }
 
-/// LU factorisation with partial pivoting of the row-major n×n matrix A in
-/// place (L below the diagonal, unit diagonal implied). False if a pivot
-/// vanishes or is not finite.
+/// LU factorisation with partial pivoting (LAPACK getrf) of the row-major
+/// n×n matrix A in place. LAPACK sees the column-major Aᵀ, so luSolve solves
+/// with the transpose. False if the matrix is singular or a pivot is not finite.
 bool luFactor(std::vector<Real>& a, std::vector<int>& piv, int n) {
   piv.resize(n);
-  for (int k = 0; k < n; ++k) {
-    int p = k;
-    Real best = std::fabs(a[static_cast<std::size_t>(k) * n + k]);
-    for (int i = k + 1; i < n; ++i) {
-      const Real v = std::fabs(a[static_cast<std::size_t>(i) * n + k]);
-      if (v > best) {
-        best = v;
-        p = i;
-      }
-    }
-    if (!(best > 0) || !std::isfinite(best)) return false;
-    piv[k] = p;
-    if (p != k) {
-      std::swap_ranges(a.begin() + static_cast<std::ptrdiff_t>(k) * n,
-                       a.begin() + static_cast<std::ptrdiff_t>(k + 1) * n,
-                       a.begin() + static_cast<std::ptrdiff_t>(p) * n);
-    }
-    const Real* rk = &a[static_cast<std::size_t>(k) * n];
-    const Real inv = 1 / rk[k];
-    for (int i = k + 1; i < n; ++i) {
-      Real* ri = &a[static_cast<std::size_t>(i) * n];
-      const Real l = ri[k] * inv;
-      ri[k] = l;
-      if (l == 0) continue;
-      for (int j = k + 1; j < n; ++j) ri[j] -= l * rk[j];
-    }
-  }
+  int info = 0;
+  Teuchos::LAPACK<int, Real>().GETRF(n, n, a.data(), n, piv.data(), &info);
+  if (info != 0) return false;
+  for (int k = 0; k < n; ++k)
+    if (!std::isfinite(a[static_cast<std::size_t>(k) * n + k])) return false;
   return true;
 }
 
 /// Solves A x = b with the factors of luFactor; b is overwritten by x.
-void luSolve(const std::vector<Real>& a, const std::vector<int>& piv, std::vector<Real>& b,
-             int n) {
-  for (int k = 0; k < n; ++k) {
-    std::swap(b[k], b[piv[k]]);
-    const Real* rk = &a[static_cast<std::size_t>(k) * n];
-    Real s = b[k];
-    for (int j = 0; j < k; ++j) s -= rk[j] * b[j];
-    b[k] = s;
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    const Real* ri = &a[static_cast<std::size_t>(i) * n];
-    Real s = b[i];
-    for (int j = i + 1; j < n; ++j) s -= ri[j] * b[j];
-    b[i] = s / ri[i];
-  }
+void luSolve(const std::vector<Real>& a, const std::vector<int>& piv, std::vector<Real>& b, int n) {
+  int info = 0;
+  Teuchos::LAPACK<int, Real>().GETRS('T', n, 1, a.data(), n, piv.data(), b.data(), n, &info);
 }
 
 /// The discrete problem on one set of rings.

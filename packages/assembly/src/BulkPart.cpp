@@ -1,6 +1,7 @@
 #include "cgcm/assembly/BulkPart.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <string>
 
 #include "cgcm/core/Error.hpp"
@@ -24,10 +25,15 @@ namespace {
 using DofView = Kokkos::View<LocalIndex**, Kokkos::LayoutRight>;
 using CoordView = Kokkos::View<Real***, Kokkos::LayoutRight>;
 
+struct BlockFailures {
+  int count = 0;
+  LocalIndex first = 0;  ///< the lowest failed cell of the block, if count > 0
+};
+
 // Evaluates one block with a fixed (formulation, element) kernel; returns the
-// number of cells that turned inside out.
+// number of cells that turned inside out and the first of them.
 template <class Kernel>
-int assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordView& Xref,
+BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordView& Xref,
                   const BulkPart::ConstVectorView& u, const BulkPart::VectorView& f,
                   const BulkPart::LocalMatrix* J, const material::NeoHookean& mat) {
   constexpr int nn = Kernel::numNodes, dim = Kernel::dim, nd = Kernel::numDofs;
@@ -64,7 +70,22 @@ int assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordVie
         for (int r = 0; r < nd; ++r) Kokkos::atomic_add(&f(dofLids(c, r), 0), fe[r]);
       },
       failures);
-  return failures;
+  if (failures == 0) return {};
+  // Only on failure: a second pass finds the first inverted cell for the message.
+  LocalIndex first = numCells;
+  Kokkos::parallel_reduce(
+      "cgcm::firstInvertedCell", Kokkos::RangePolicy<ExecSpace>(0, numCells),
+      [=](const LocalIndex c, LocalIndex& lowest) {
+        Real X[nn][dim], x[nn][dim], fe[nd];
+        for (int a = 0; a < nn; ++a)
+          for (int i = 0; i < dim; ++i) {
+            X[a][i] = Xref(c, a, i);
+            x[a][i] = X[a][i] + u(dofLids(c, a * dim + i), 0);
+          }
+        if (!Kernel::residual(X, x, mat, fe) && c < lowest) lowest = c;
+      },
+      Kokkos::Min<LocalIndex>(first));
+  return {failures, first};
 }
 
 }  // namespace
@@ -86,11 +107,15 @@ BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formula
     Block d;
     d.type = blk.type;
     d.numNodes = nn;
+    d.name = blk.name;
+    d.cells = cells;
+    d.firstNodes.resize(cells.size());
     d.dofLids = DofView("dofLids", cells.size(), nn * dim_);
     d.X = CoordView("X", cells.size(), nn, dim_);
     for (std::size_t k = 0; k < cells.size(); ++k)
       for (int a = 0; a < nn; ++a) {
         const LocalIndex node = blk.connectivity[std::size_t(cells[k]) * nn + a];
+        if (a == 0) d.firstNodes[k] = node;
         for (int i = 0; i < dim_; ++i) {
           d.dofLids(k, a * dim_ + i) = overlap_->getLocalElement(dofs.dof(node, i));
           d.X(k, a, i) = mesh.coord(node, i);
@@ -141,21 +166,33 @@ void BulkPart::setColumnMap(const Map& columns) {
 int BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const {
   using namespace fem;
   int failures = 0;
+  firstFailure_.clear();
   for (const auto& b : blocks_) {
+    BlockFailures bf;
     switch (formulation_) {
       case Formulation::PlaneStrain:
-        failures += assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        bf = assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
         break;
       case Formulation::Axisymmetric:
-        failures += assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        bf = assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
         break;
       case Formulation::ThreeD:
         if (b.type == mesh::CellType::Hex8)
-          failures += assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+          bf = assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
         else
-          failures += assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+          bf = assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
         break;
     }
+    if (bf.count > 0 && firstFailure_.empty()) {
+      const std::size_t c = bf.first;
+      std::ostringstream where;
+      where << "cell " << b.cells[c] << " of block \"" << b.name << "\" (its first node " << b.firstNodes[c]
+            << " at X = (";
+      for (int i = 0; i < dim_; ++i) where << (i ? ", " : "") << b.X(c, 0, i);
+      where << "))";
+      firstFailure_ = where.str();
+    }
+    failures += bf.count;
   }
   return failures;
 }

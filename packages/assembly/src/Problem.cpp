@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace cgcm::assembly {
 
@@ -13,6 +15,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// The message of the lowest rank that has one (every rank gets it), or
+/// `fallback` if none has. Collective; only on the failure path.
+std::string firstOnAnyRank(const Teuchos::Comm<int>& comm, const std::string& local, const std::string& fallback) {
+  const int mine = local.empty() ? comm.getSize() : comm.getRank();
+  int root = comm.getSize();
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &mine, &root);
+  if (root == comm.getSize()) return fallback;
+  int length = static_cast<int>(local.size());
+  Teuchos::broadcast(comm, root, 1, &length);
+  std::string text = comm.getRank() == root ? local : std::string(static_cast<std::size_t>(length), ' ');
+  if (length > 0) Teuchos::broadcast(comm, root, length, text.data());
+  return text;
+}
 
 }  // namespace
 
@@ -89,26 +105,29 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
     }
   }
   int failures = 0;
+  std::string firstInverted;
   {
     auto uv = uOverlap_->getLocalViewDevice(Tpetra::Access::ReadOnly);
     auto fv = fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite);
     BulkPart::LocalMatrix lclJ;
     if (J) lclJ = J->getLocalMatrixDevice();
-    for (const auto& part : bulk_) failures += part.assemble(uv, fv, J ? &lclJ : nullptr);
+    for (const auto& part : bulk_) {
+      failures += part.assemble(uv, fv, J ? &lclJ : nullptr);
+      if (firstInverted.empty()) firstInverted = part.firstFailure();
+    }
   }
   double interactionSeconds = 0.0;
-  int dropped = 0;
-  std::string interactionFailure;
+  InteractionPart::Outcome interaction;
   if (interactionPart_) {
     const auto ti = Clock::now();
-    dropped = interactionPart_->assemble(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J,
-                                         interactionFailure);
+    interaction = interactionPart_->assemble(u, fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite), J);
     interactionSeconds = secondsSince(ti);
     timings_.search += interactionPart_->lastSearchSeconds();
   }
   // every rank learns of every failure here, before the collective end of assembly
-  int counts[3] = {failures, dropped, interactionFailure.empty() ? 0 : 1}, globalCounts[3] = {0, 0, 0};
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, 3, counts, globalCounts);
+  const Teuchos::Comm<int>& comm = *dofs_->comm();
+  int counts[3] = {failures, interaction.dropped, interaction.failure.empty() ? 0 : 1}, globalCounts[3] = {0, 0, 0};
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, counts, globalCounts);
   if (J) Tpetra::endAssembly(*J);
   f.putScalar(0.0);
   f.doExport(*fOverlap_, *exporter_, Tpetra::ADD);
@@ -118,17 +137,32 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
   } else {
     timings_.residual += secondsSince(t0) - interactionSeconds;
   }
-  if (globalCounts[2] > 0)
-    throw NumericalError(interactionFailure.empty()
-                             ? "interaction: the bodies touch or interpenetrate (found on another rank)"
-                             : interactionFailure);
+  if (globalCounts[2] > 0) throw NumericalError(firstOnAnyRank(comm, interaction.failure, "interaction failed"));
   if (globalCounts[0] > 0)
-    throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0)");
+    throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0), the first " +
+                               firstOnAnyRank(comm, firstInverted, "on another rank"));
   if (globalCounts[1] > 0) {
     graphOutdated_ = true;
     throw GraphOutdatedError(std::to_string(globalCounts[1]) +
-                             " interaction tangent entries fell outside the matrix graph");
+                             " interaction tangent entries fell outside the matrix graph (the first at " +
+                             firstOnAnyRank(comm, interaction.firstDropped, "another rank") + ")");
   }
+  checkFinite(f);
+}
+
+void Problem::checkFinite(const Vector& f) const {
+  const auto values = f.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::string first;
+  for (std::size_t k = 0; k < values.extent(0) && first.empty(); ++k) {
+    if (std::isfinite(values(k, 0))) continue;
+    const GlobalIndex dof = f.getMap()->getGlobalElement(LocalIndex(k));
+    const int perNode = dofs_->dofsPerNode();
+    first = "node " + std::to_string(dof / perNode) + ", component " + std::to_string(dof % perNode) + " (" +
+            std::to_string(values(k, 0)) + ")";
+  }
+  int bad = first.empty() ? 0 : 1, anyBad = 0;
+  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, 1, &bad, &anyBad);
+  if (anyBad) throw NumericalError("the residual is not finite at " + firstOnAnyRank(*dofs_->comm(), first, "?"));
 }
 
 void Problem::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor) {

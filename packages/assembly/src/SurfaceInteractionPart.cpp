@@ -39,7 +39,7 @@ SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, 
   }
 }
 
-int SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& failure) {
+InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) {
   const std::vector<Real>& x = coords_.update(u);
   const auto t0 = std::chrono::steady_clock::now();
   interaction_->updatePairs(x.data());
@@ -51,7 +51,7 @@ int SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matr
     lclJ = J->getLocalMatrixDevice();
     colMap = J->getColMap();
   }
-  int dropped = 0;
+  Outcome out;
   auto scatter = [&](const interaction::PairContribution& c) {
     LocalIndex rows[12], cols[interaction::kMaxContributionColumns];
     const int nrows = dim_ * c.numRowNodes;
@@ -64,16 +64,28 @@ int SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matr
     for (int b = 0; b < c.numColNodes; ++b)
       for (int j = 0; j < dim_; ++j) cols[dim_ * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
     // sumIntoValues skips columns missing from the row and returns how many it found
-    for (int r = 0; r < nrows; ++r) dropped += ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
+    for (int r = 0; r < nrows; ++r) {
+      const int missing = ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
+      if (missing == 0) continue;
+      out.dropped += missing;
+      if (!out.firstDropped.empty()) continue;
+      const Real zero = 0.0;  // probe the columns one by one for the first that is missing
+      for (int k = 0; k < ncols; ++k)
+        if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, false, true) == 0) {
+          out.firstDropped = "row node " + std::to_string(c.rowNodes[r / dim_]) + ", column node " +
+                             std::to_string(c.colNodes[k / dim_]);
+          break;
+        }
+    }
   };
   // each pair is evaluated by exactly one rank
   auto owned = [&](const interaction::InteractionPair& p) { return bool(ownsFacet_[p.body][p.facet]); };
   try {
     interaction_->evaluate(x.data(), scatter, J != nullptr, owned);
   } catch (const NumericalError& e) {
-    failure = e.what();
+    out.failure = e.what();
   }
-  return dropped;
+  return out;
 }
 
 std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteractionPart::couplings(const Vector& u, Real radius) {

@@ -39,7 +39,7 @@ VolumeInteractionPart::VolumeInteractionPart(Teuchos::RCP<const DofMap> dofs, co
     for (int i = 0; i < dim; ++i) rowIds_(n, i) = overlap.getLocalElement(dofs_->dof(n, i));
 }
 
-int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J, std::string& failure) {
+InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) {
   const std::vector<Real>& x = coords_.update(u);
   const auto t0 = std::chrono::steady_clock::now();
   interaction_->updatePairs(x.data());
@@ -59,6 +59,7 @@ int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matri
   const auto colIds = colIds_;
   Kokkos::View<int[1]> dropped("cgcm::volume_dropped");
   Kokkos::View<LocalIndex[2]> nonFinite("cgcm::volume_non_finite");  // the first pair's cells + 1, 0: none
+  Kokkos::View<LocalIndex[2]> firstMissing("cgcm::volume_first_missing");  // row, column node + 1, 0: none
   const auto rowIds = rowIds_;
   const bool withTangent = J != nullptr;
   auto scatter = [=](const interaction::VolumeContribution& c, long) {
@@ -79,15 +80,31 @@ int VolumeInteractionPart::assemble(const Vector& u, const VectorView& fv, Matri
       for (int j = 0; j < dim; ++j) cols[dim * b + j] = colIds(c.colNodes[b], j);
     int missing = 0;
     // sumIntoValues skips columns missing from the row and returns how many it found
-    for (int r = 0; r < nr; ++r) missing += nc - lclJ.sumIntoValues(rows[r], cols, nc, c.K[r], false, true);
+    for (int r = 0; r < nr; ++r) {
+      const int m = nc - lclJ.sumIntoValues(rows[r], cols, nc, c.K[r], false, true);
+      if (m == 0) continue;
+      missing += m;
+      const Real zero = 0.0;  // probe the columns one by one for the first that is missing
+      for (int k = 0; k < nc; ++k)
+        if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, false, true) == 0) {
+          if (Kokkos::atomic_compare_exchange(&firstMissing(0), LocalIndex(0), c.rowNodes[r / dim] + 1) == 0)
+            firstMissing(1) = c.colNodes[k / dim] + 1;
+          break;
+        }
+    }
     if (missing) Kokkos::atomic_add(&dropped(0), missing);
   };
   interaction_->evaluate(x.data(), scatter, withTangent);
+  Outcome out;
+  out.dropped = dropped(0);
+  if (firstMissing(0) > 0)
+    out.firstDropped = "row node " + std::to_string(firstMissing(0) - 1) + ", column node " +
+                       std::to_string(firstMissing(1) - 1);
   if (nonFinite(0) > 0)
-    failure = "volume pair interaction: a non-finite force between the cells of nodes " +
+    out.failure = "volume pair interaction: a non-finite force between the cells of nodes " +
               std::to_string(nonFinite(0) - 1) + " and " + std::to_string(nonFinite(1) - 1) +
               " (their quadrature points coincide: the bodies interpenetrate)";
-  return dropped(0);
+  return out;
 }
 
 std::vector<std::pair<LocalIndex, LocalIndex>> VolumeInteractionPart::couplings(const Vector& u, Real radius) {

@@ -1,6 +1,7 @@
 #include "cgcm/interaction/Quadrature.hpp"
 
 #include <algorithm>
+#include <boost/math/special_functions/legendre.hpp>
 #include <cmath>
 #include <string>
 
@@ -13,37 +14,20 @@ GaussRule gaussLegendreUnit(int n) {
   GaussRule rule;
   rule.points.resize(n);
   rule.weights.resize(n);
-  const Real pi = kPi;
-  // P_n(x) and P_n'(x) by the three-term recurrence.
-  auto legendre = [n](Real x, Real& p, Real& dp) {
-    Real p0 = 1.0, p1 = x;
-    for (int k = 2; k <= n; ++k) {
-      const Real p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-      p0 = p1;
-      p1 = p2;
-    }
-    p = p1;
-    dp = n * (x * p1 - p0) / (x * x - 1.0);
-  };
-  // Newton iteration on the Legendre polynomial P_n over [-1, 1].
-  for (int i = 0; i < (n + 1) / 2; ++i) {
-    Real x = std::cos(pi * (i + 0.75) / (n + 0.5));
-    Real p = 0.0, dp = 0.0;
-    for (int it = 0; it < 100; ++it) {
-      legendre(x, p, dp);
-      const Real dx = p / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16) break;
-    }
-    legendre(x, p, dp);  // the derivative at the converged root
-    const Real w = 2.0 / ((1.0 - x * x) * dp * dp);
-    // x is the i-th largest root; map [-1, 1] -> [0, 1]
-    rule.points[n - 1 - i] = 0.5 * (1.0 + x);
-    rule.points[i] = 0.5 * (1.0 - x);
-    rule.weights[n - 1 - i] = 0.5 * w;
-    rule.weights[i] = 0.5 * w;
+  // The non-negative roots x_k of P_n, ascending (Boost.Math), weights
+  // 2 / ((1 − x²) P_n'(x)²); mapped from [−1, 1] to [0, 1] in ± pairs (an
+  // odd n's root 0 maps onto itself).
+  const std::vector<Real> roots = boost::math::legendre_p_zeros<Real>(n);
+  const int m = static_cast<int>(roots.size());
+  for (int k = 0; k < m; ++k) {
+    const Real x = roots[k];
+    const Real dp = boost::math::legendre_p_prime<Real>(n, x);
+    const Real w = 1.0 / ((1.0 - x * x) * dp * dp);  // half of 2/(...) for [0, 1]
+    rule.points[n - m + k] = 0.5 * (1.0 + x);
+    rule.points[m - 1 - k] = 0.5 * (1.0 - x);
+    rule.weights[n - m + k] = w;
+    rule.weights[m - 1 - k] = w;
   }
-  if (n % 2 == 1) rule.points[n / 2] = 0.5;
   return rule;
 }
 

@@ -1,5 +1,8 @@
 #include "cgcm/solver/LinearSolver.hpp"
 
+#include <iterator>
+#include <vector>
+
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
@@ -8,6 +11,7 @@
 
 #include "cgcm/assembly/TpetraTypes.hpp"
 #include "cgcm/core/Error.hpp"
+#include "cgcm/solver/ParameterValidators.hpp"
 
 namespace cgcm::solver {
 
@@ -19,22 +23,16 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
-  auto types = Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>(
-      kTypes[0], kTypes[1], kTypes[2], kTypes[3], kTypes[4])));
+  const auto types = validators::choices(std::vector<std::string>(std::begin(kTypes), std::end(kTypes)));
   valid->set("Type", "auto",
              "auto: in 2D Amesos2 KLU2 on one rank, Belos GMRES + Ifpack2 on several; in 3D Belos GMRES + MueLu; or Amesos2 KLU2 (one rank "
              "only), Belos GMRES + Ifpack2, Belos GMRES + MueLu, Stratimikos (use the Stratimikos sublist as is)",
              types);
-  auto positive = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
-  positive->setMin(1e-16);
-  valid->set("Tolerance", 1e-10, "relative residual tolerance of iterative solvers", positive);
-  auto posInt = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
-  posInt->setMin(1);
-  valid->set("Max Iterations", 1000, "iteration limit of iterative solvers", posInt);
-  valid->set("Krylov Space", 200, "GMRES restart length", posInt);
-  auto level = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
-  level->setMin(0);
-  valid->set("ILU Fill Level", 2, "level of fill of the Ifpack2 RILUK preconditioner", level);
+  using namespace validators;
+  valid->set("Tolerance", 1e-10, "relative residual tolerance of iterative solvers", atLeast(1e-16));
+  valid->set("Max Iterations", 1000, "iteration limit of iterative solvers", intAtLeast(1));
+  valid->set("Krylov Space", 200, "GMRES restart length", intAtLeast(1));
+  valid->set("ILU Fill Level", 2, "level of fill of the Ifpack2 RILUK preconditioner", intAtLeast(0));
   valid->sublist("Stratimikos", false, "Stratimikos parameter list, used as is when Type = Stratimikos")
       .disableRecursiveValidation();
   return valid;

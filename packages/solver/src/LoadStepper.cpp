@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/solver/ParameterValidators.hpp"
 
 namespace cgcm::solver {
 
@@ -17,29 +18,23 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
   valid->set("Approach Path", Teuchos::Array<double>{0.0, 0.1},
              "waypoints of the prescribed displacement u; the run starts at the first and moves linearly "
              "through the others, e.g. {-0.02, 0.06, -0.03}: approach, then retract");
-  auto positive = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
-  positive->setMin(1e-300);
+  using namespace validators;
+  const auto positive = atLeast(1e-300);
   valid->set("Initial Increment", 0.005, "first increment of u (arc-length control: the first step's change of "
              "the continuation parameter)", positive);
   valid->set("Min Increment", 1e-7, "the run stops with an error if a step fails at this increment "
              "(arc-length control: the smallest arclength step)", positive);
   valid->set("Max Increment", 0.01, "largest increment of u (arc-length control: half the largest arclength step)",
              positive);
-  auto iters = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
-  iters->setMin(1);
   valid->set("Easy Step Iterations", 4, "the increment grows after a step that needed at most this many "
-             "Newton iterations", iters);
-  auto growth = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
-  growth->setMin(1.0);
-  valid->set("Growth Factor", 1.5, "increment growth after an easy step (>= 1)", growth);
-  auto cut = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(0.01, 0.99));
-  valid->set("Cutback Factor", 0.5, "increment reduction after a failed step (0.01 .. 0.99)", cut);
-  auto cutbacks = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 50));
+             "Newton iterations", intAtLeast(1));
+  valid->set("Growth Factor", 1.5, "increment growth after an easy step (>= 1)", atLeast(1.0));
+  valid->set("Cutback Factor", 0.5, "increment reduction after a failed step (0.01 .. 0.99)", between(0.01, 0.99));
   valid->set("Cutbacks Before Jump", 0,
              "displacement control: a step that still fails after this many cut-backs is taken through by the "
              "Jump Method, which also passes a fold (jump-to-contact, jump-off-contact, a ring of the contact "
              "zone snapping on or off); 0: at the first failure (0 .. 50)",
-             cutbacks);
+             intBetween(0, 50));
   valid->set("Jump Method", "relaxation",
              "displacement control, a step that failed: \"relaxation\" relaxes the last state at the step's u "
              "(pseudo-transient continuation: an overdamped motion ending in Newton steps) to where a damped "
@@ -47,12 +42,11 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
              "follows the unstable branch by arc-length until u is back at the step's value (the connected "
              "stable branch; slow where the unstable branch has many small loops, as when the contact zone "
              "grows ring by ring)",
-             Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("relaxation", "continuation"))));
-  auto relaxIters = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(1, 100000));
+             choices({"relaxation", "continuation"}));
   valid->set("Relaxation Iterations", 400,
              "Jump Method = relaxation: iterations (linear solves) a jump may take before the step counts as "
              "failed (1 .. 100000)",
-             relaxIters);
+             intBetween(1, 100000));
   return valid;
 }
 

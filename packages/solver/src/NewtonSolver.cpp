@@ -3,6 +3,7 @@
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
+#include <NOX_SolverStats.hpp>
 #include <NOX_Thyra.H>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -10,12 +11,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
+#include <sstream>
+#include <string>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/solver/Convergence.hpp"
 #include "cgcm/solver/PseudoTransientModel.hpp"
+#include "cgcm/solver/ParameterValidators.hpp"
 
 namespace cgcm::solver {
 
@@ -29,7 +33,21 @@ class ResidualRecorder : public NOX::Observer {
   explicit ResidualRecorder(std::vector<Real>& norms, bool print, int rank)
       : norms_(norms), print_(print), rank_(rank) {}
   void runPreSolve(const NOX::Solver::Generic& s) override { record(s); }
-  void runPostIterate(const NOX::Solver::Generic& s) override { record(s); }
+  void runPostIterate(const NOX::Solver::Generic& s) override {
+    record(s);
+    // NOX goes on with an unconverged Newton direction ("Rescue Bad Newton
+    // Solve"); the first such solve is kept for the failure message.
+    const auto stats = s.getSolverStatistics();
+    if (stats && linearFailure_.empty() && stats->linearSolve.lastNonlinearSolve_NumLinearSolves > 0 &&
+        !stats->linearSolve.lastLinearSolve_Converged) {
+      std::ostringstream msg;
+      msg << "the linear solve of Newton iteration " << s.getNumIterations() << " did not converge ("
+          << stats->linearSolve.lastLinearSolve_NumIterations << " iterations, relative residual "
+          << stats->linearSolve.lastLinearSolve_AchievedTolerance << ")";
+      linearFailure_ = msg.str();
+    }
+  }
+  const std::string& linearFailure() const { return linearFailure_; }
 
  private:
   void record(const NOX::Solver::Generic& s) {
@@ -42,6 +60,7 @@ class ResidualRecorder : public NOX::Observer {
   std::vector<Real>& norms_;
   bool print_;
   int rank_;
+  std::string linearFailure_;
 };
 
 Teuchos::RCP<Vector> tpetraCopy(const NOX::Abstract::Vector& x) {
@@ -60,8 +79,8 @@ Teuchos::RCP<const Teuchos::ParameterList> NewtonSettings::validParameters() {
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Newton"));
   valid->set("Line Search", "full step", "full step: plain Newton; backtrack: halve the step until |f| decreases",
-             Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("full step", "backtrack"))));
-  auto tolerance = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(1e-14, 1e-2));
+             validators::choices({"full step", "backtrack"}));
+  const auto tolerance = validators::between(1e-14, 1e-2);
   valid->set("Residual Tolerance", 1e-10,
              "a state is accepted when the unscaled 2-norm of the residual (internal plus interaction force over "
              "all free dofs) is at most this times the force unit F_ref: E0/R0 = Y R0^2 for contact (Y R0 per "
@@ -69,9 +88,8 @@ Teuchos::RCP<const Teuchos::ParameterList> NewtonSettings::validParameters() {
              "the absolute value. Round-off limits |f|_2 to about 3e-12, 7e-12, 1.4e-11 F_ref on the benchmark "
              "meshes of level 0, 1, 2 (doubling per level): raise the tolerance on finer meshes (1e-14 .. 1e-2)",
              tolerance);
-  auto iters = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(1, 1000));
   valid->set("Max Iterations", 15, "Newton iterations before a step counts as failed and is cut back (1 .. 1000)",
-             iters);
+             validators::intBetween(1, 1000));
   valid->set("Print Iterations", false, "print |f| after every Newton iteration");
   return valid;
 }
@@ -268,9 +286,9 @@ NewtonResult NewtonSolver::runNox(const Teuchos::RCP<NOX::Thyra::Group>& group, 
       Teuchos::rcp_implicit_cast<Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(uCopy))));
 
   auto solverParams = Teuchos::rcp(new Teuchos::ParameterList(params));
-  Teuchos::RCP<NOX::Observer> recorder = Teuchos::rcp(
+  auto recorder = Teuchos::rcp(
       new ResidualRecorder(result.residualNorms, settings_.printIterations, model_->map()->getComm()->getRank()));
-  solverParams->sublist("Solver Options").set("Observer", recorder);
+  solverParams->sublist("Solver Options").set("Observer", Teuchos::rcp_implicit_cast<NOX::Observer>(recorder));
   try {
     auto solver = NOX::Solver::buildSolver(group, convergenceTests(settings_.tolerance(), maxIterations), solverParams);
     const auto status = solver->solve();
@@ -285,6 +303,7 @@ NewtonResult NewtonSolver::runNox(const Teuchos::RCP<NOX::Thyra::Group>& group, 
                        : std::isfinite(last) ? "no progress in " + std::to_string(n) + " iterations (|f| = " +
                                                    std::to_string(last) + ")"
                                              : "non-finite residual or failed iterate";
+      if (!recorder->linearFailure().empty()) result.failure += "; " + recorder->linearFailure();
     }
   } catch (const std::exception& e) {
     // Inverted cells, touching surfaces, entries outside the graph, linear

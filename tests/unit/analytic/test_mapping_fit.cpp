@@ -202,7 +202,10 @@ TEST(LoadCurveFit, RecoversLambdaOfASyntheticCurve) {
   fixed.offset = offset;
   const an::FitResult r1 = an::fitMaugisDugdale(curve, map, fixed);
   EXPECT_NEAR(r1.lambda, lambda, 1e-6 * lambda);
-  EXPECT_LT(r1.rms, 1e-12 * map.fF);
+  // The fit's minimiser (Boost's Brent) locates a minimum to 2^-26 ≈ 1.5e-8
+  // relative, so even an exact curve leaves an rms of about 5e-10 fF here
+  // (5e-8 fF with the offset fitted too, a minimisation nested in another).
+  EXPECT_LT(r1.rms, 1e-8 * map.fF);
   // The window is u ≥ u(P_min): the approach phase and the descending part
   // of the branch before the load minimum are left out.
   const std::size_t iMin = static_cast<std::size_t>(
@@ -220,7 +223,7 @@ TEST(LoadCurveFit, RecoversLambdaOfASyntheticCurve) {
   const an::FitResult r2 = an::fitMaugisDugdale(curve, map, free);
   EXPECT_NEAR(r2.lambda, lambda, 1e-6 * lambda);
   EXPECT_NEAR(r2.offset, offset, 1e-9);
-  EXPECT_LT(r2.rms, 1e-10 * map.fF);
+  EXPECT_LT(r2.rms, 1e-6 * map.fF);
 
   // With a wrong fixed offset the fit is worse and λ is off.
   an::FitOptions wrong;

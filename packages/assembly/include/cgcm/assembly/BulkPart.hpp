@@ -5,6 +5,7 @@
 // (owned + shared) rows with atomic adds. It knows its cells, their dofs and
 // its material; the maps, the graph and the sum over parts belong to the
 // Problem.
+#include <string>
 #include <vector>
 
 #include <Kokkos_Core.hpp>
@@ -43,6 +44,9 @@ class BulkPart {
   /// column ids must be those of setColumnMap). Returns the number of cells
   /// that turned inside out (J <= 0); their contributions are left out.
   int assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const;
+  /// The first inverted cell of the last assemble ("cell 12 of block \"b\" (its
+  /// first node 40 at X = (...))"), empty if none.
+  const std::string& firstFailure() const { return firstFailure_; }
 
  private:
   struct Block {
@@ -51,12 +55,16 @@ class BulkPart {
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> dofLids;  // [cell][a*dim+i], overlap local ids
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> colLids;  // [cell][a*dim+i], matrix column ids
     Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i], reference coordinates
+    std::string name;                                         // the mesh block's
+    std::vector<LocalIndex> cells;                            // block-local cell index in the mesh
+    std::vector<LocalIndex> firstNodes;                       // mesh node of each cell's first vertex
   };
   const Map* overlap_;
   Formulation formulation_;
   int dim_;
   material::NeoHookean material_;
   std::vector<Block> blocks_;
+  mutable std::string firstFailure_;
 };
 
 }  // namespace cgcm::assembly

@@ -25,12 +25,17 @@ class InteractionPart {
   /// The graph's search radius now (a factor > 1 times the cutoff).
   virtual Real searchRadius() const = 0;
 
+  /// What one assemble met on this rank.
+  struct Outcome {
+    int dropped = 0;           ///< tangent entries outside J's graph (left out)
+    std::string firstDropped;  ///< where the first was: "row node R, column node C"
+    std::string failure;       ///< the reason the loop ended early (e.g. touching surfaces), or empty
+  };
   /// f += f_C at u (overlap rows) and, if J is given (in assembly mode),
-  /// J += its tangent. Returns the number of tangent entries that fell
-  /// outside J's graph (they are dropped). A failure this rank meets (e.g.
-  /// touching surfaces) ends its loop with the reason in `failure`, so that
-  /// the caller can stop every rank together. Collective.
-  virtual int assemble(const Vector& u, const VectorView& f, Matrix* J, std::string& failure) = 0;
+  /// J += its tangent. A failure this rank meets ends its loop with the
+  /// reason in the outcome, so that the caller can stop every rank together.
+  /// Collective.
+  virtual Outcome assemble(const Vector& u, const VectorView& f, Matrix* J) = 0;
   /// Seconds the last assemble spent searching (trees, pair lists).
   virtual double lastSearchSeconds() const = 0;
 

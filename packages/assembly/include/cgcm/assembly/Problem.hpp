@@ -115,6 +115,10 @@ class Problem {
   /// Component `component` of `v` at `node`, on every rank (collective).
   Real nodeValue(const Vector& v, LocalIndex node, int component) const;
 
+  /// Throws NumericalError naming the first node (and component) whose entry
+  /// of the owned vector f is NaN or Inf; evaluate calls it on every residual.
+  /// Collective.
+  void checkFinite(const Vector& f) const;
   /// Sum of component `component` of the owned entries of `f` over a node set (collective).
   Real sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const;
 

@@ -41,7 +41,7 @@ class SurfaceInteractionPart final : public InteractionPart {
 
   /// A pair this rank cannot evaluate (the surfaces touch) ends the loop
   /// with the reason in `failure`.
-  int assemble(const Vector& u, const VectorView& f, Matrix* J, std::string& failure) override;
+  Outcome assemble(const Vector& u, const VectorView& f, Matrix* J) override;
   /// The closest-point search (AABB trees and queries).
   double lastSearchSeconds() const override { return searchSeconds_; }
 

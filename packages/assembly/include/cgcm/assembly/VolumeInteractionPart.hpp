@@ -34,7 +34,7 @@ class VolumeInteractionPart final : public InteractionPart {
     return interaction_->cutoff() + searchRadiusFactor_ * interaction_->skin();
   }
   const std::vector<Real>& currentCoordinates(const Vector& u) override { return coords_.update(u); }
-  int assemble(const Vector& u, const VectorView& f, Matrix* J, std::string& failure) override;
+  Outcome assemble(const Vector& u, const VectorView& f, Matrix* J) override;
   /// Building the pair list (when it is rebuilt).
   double lastSearchSeconds() const override { return searchSeconds_; }
   /// Every node of a cell with every node of each cell of another body
