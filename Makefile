@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench paper jkr-study stability-map sphere-3d method-study sanitize fuzz
+.PHONY: demo test build configure deps clean bench figures paper jkr-study stability-map sphere-3d method-study sanitize fuzz
 
 deps:
 	@bash scripts/install-deps.sh
@@ -45,6 +45,11 @@ fuzz: build
 
 bench: build
 	@bash bench/run-all.sh $(BUILD_DIR)
+
+# Every figure of doc/validation.md and its tables (tools/make_figures.sh;
+# the long studies below are run when their tables are missing under output/).
+figures: build
+	@bash tools/make_figures.sh $(BUILD_DIR)
 
 # The paper's Fig. 5 and Fig. 6 studies (inputs/paper), plotted into doc/figures.
 paper: build

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Overlays a CGCM load curve with the Maugis-Dugdale curve of the same
-interaction (the paper's Fig. 9a / 11a), mapped to the CGCM normalisation
-by cgcm-analytic (P_C = f_F P_MD, u = f_delta delta_MD).
+"""Overlays a CGCM load curve with the Maugis-Dugdale curves of the same
+interaction (the paper's Fig. 9a / 11a) at the theoretical lambda and at the
+lambda fitted to the curve (cgcm-analytic fit), mapped to the CGCM
+normalisation by cgcm-analytic (P_C = f_F P_MD, u = f_delta delta_MD); the
+states of the other figures are marked (--mark U, approach).
 
     plot_md_comparison.py --curve output/demo/load_curve.csv --gammaL 50 --gammaW 200 --nu 0.2
-                          [--lambda L (default: theoretical)] [--analytic build/bin/cgcm-analytic]
-                          [--output md.png]
+                          [--lambda L (instead of the two)] [--mark=U1,U2,...]
+                          [--analytic build/bin/cgcm-analytic] [--output md.png]
 """
 import argparse
 import csv
@@ -33,13 +35,17 @@ def main():
     ap.add_argument("--gammaL", required=True)
     ap.add_argument("--gammaW", required=True)
     ap.add_argument("--nu", default="0.2")
-    ap.add_argument("--lambda", dest="lam")
+    ap.add_argument("--lambda", dest="lam", help="one lambda instead of the theoretical and the best fit")
+    ap.add_argument("--mark", default="", help="u of approach states to mark (open circles), comma-separated")
     ap.add_argument("--analytic", default="build/bin/cgcm-analytic")
     ap.add_argument("--output", default="md-comparison.png")
     a = ap.parse_args()
     m = run([a.analytic, "map", "--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu])
-    lam = a.lam or repr(m["lambda_theory"][0])
-    md = run([a.analytic, "curve", "--model", "md", "--lambda", lam])
+    if a.lam:
+        lams = [("", float(a.lam))]
+    else:
+        fit = run([a.analytic, "fit", "--curve", a.curve, "--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu])
+        lams = [("theoretical ", m["lambda_theory"][0]), ("best fit ", fit["lambda"][0])]
     jkr = run([a.analytic, "curve", "--model", "jkr"])
     fF, fd = m["f_F"][0], m["f_delta"][0]
     with open(a.curve, newline="") as f:
@@ -48,8 +54,14 @@ def main():
     u, P = c["u"], c["P"]
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     draw(ax, c, P, lw=1.6, label="CGCM (Method 3, large deformation; dashed: unstable)")
-    ax.plot([fd * d for d in md["delta"]], [fF * p for p in md["P"]], "--", lw=1.2,
-            label=f"Maugis-Dugdale, lambda = {float(lam):.3g}")
+    for (name, lam), style in zip(lams, ("--", "-.")):
+        md = run([a.analytic, "curve", "--model", "md", "--lambda", repr(lam)])
+        ax.plot([fd * d for d in md["delta"]], [fF * p for p in md["P"]], style, lw=1.2,
+                label=f"Maugis-Dugdale, {name}lambda = {lam:.3g}")
+    end = max(range(len(u)), key=lambda k: u[k])  # the approach ends at the largest u
+    for target in [float(v) for v in a.mark.split(",") if v.strip()]:
+        k = min(range(end + 1), key=lambda k: abs(u[k] - target))
+        ax.plot(u[k], P[k], "o", mfc="none", mec="k", ms=8)
     ax.plot([fd * d for d in jkr["delta"]], [fF * p for p in jkr["P"]], ":", lw=1.0, label="JKR")
     ax.set_xlim(min(u), max(u))
     ax.set_ylim(1.3 * min(P), 1.05 * max(P))
@@ -60,7 +72,7 @@ def main():
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(a.output, dpi=120)
-    print(f"wrote {a.output} (lambda = {lam})")
+    print(f"wrote {a.output} (lambda = {', '.join(f'{n}{v:.4g}' for n, v in lams)})")
     return 0
 
 

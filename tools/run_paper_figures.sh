@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the decks of inputs/paper/ (the paper's Fig. 5 and 6 studies) into
-# output/paper/<deck>/ and plots them into doc/figures/. Usage:
+# output/paper/<deck>/ and plots Figs. 5 and 6 into doc/figures/ (the M-D
+# comparisons of these runs: tools/make_figures.sh). Usage:
 #   tools/run_paper_figures.sh [build-dir]        (make paper)
 set -uo pipefail
 build=${1:-build}
@@ -16,10 +17,4 @@ for deck in inputs/paper/*.xml; do
   fi
 done
 /usr/bin/python3 tools/plot_load_curves.py --figures doc/figures output/paper
-# the decks state gammaL bar = 50 and gammaW bar = 200, 20: literal reading
-gL=52.4558; gW200=115.470; gW20=11.5470
-/usr/bin/python3 tools/plot_md_comparison.py --analytic "$build/bin/cgcm-analytic" --gammaL $gL --gammaW $gW200 \
-  --curve output/paper/fig6-gammaW-200/load_curve.csv --output doc/figures/md-comparison-gw200.png
-/usr/bin/python3 tools/plot_md_comparison.py --analytic "$build/bin/cgcm-analytic" --gammaL $gL --gammaW $gW20 \
-  --curve output/paper/fig6-gammaW-20/load_curve.csv --output doc/figures/md-comparison-gw20.png
 exit $status
