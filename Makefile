@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures paper jkr-study stability-map sphere-3d method-study sanitize fuzz
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study stability-map sphere-3d method-study sanitize fuzz
 
 deps:
 	@bash scripts/install-deps.sh
@@ -50,6 +50,13 @@ bench: build
 # the long studies below are run when their tables are missing under output/).
 figures: build
 	@bash tools/make_figures.sh $(BUILD_DIR)
+
+# Mesh convergence of the paper's key numbers (Figs. 9 and 11 decks, mesh levels
+# 0-2; tools/mesh_convergence.py): output/validation/mesh-convergence/{table,orders}.csv.
+# About 30 minutes; a level already completed is not run again.
+MESH_LEVELS ?= 0 1 2
+mesh-convergence: build
+	/usr/bin/python3 tools/mesh_convergence.py --build $(BUILD_DIR) --levels $(MESH_LEVELS)
 
 # The paper's Fig. 5 and Fig. 6 studies (inputs/paper), plotted into doc/figures.
 paper: build

@@ -9,8 +9,8 @@
 #   12, 13                M-D comparisons (tools/plot_paper_states.py)
 #   demo, soft JKR        the default deck; the soft sphere on mesh levels 0 and 1
 #   JKR limit, stability  the long studies (make jkr-study, stability-map,
-#   map, Method 1 vs 3    method-study): run if their tables are missing under
-#                         output/, otherwise re-plotted from them
+#   map, Method 1 vs 3,   method-study, mesh-convergence): run if their tables
+#   mesh convergence      are missing under output/, otherwise plotted from them
 #
 # The plain (unbarred) gammaL, gammaW of the paper decks: literal reading of
 # gammaL bar = 50 and gammaW bar = 200, 20 (doc/theory.md).
@@ -77,6 +77,9 @@ if [ -s output/stability-map/stability_boundary.csv ] && [ -s output/stability-m
   cp output/stability-map/stability_map.png doc/figures/stability-map.png
 else
   make --no-print-directory stability-map BUILD_DIR="$build" || status=1
+fi
+if [ ! -s output/validation/mesh-convergence/orders.csv ]; then
+  make --no-print-directory mesh-convergence BUILD_DIR="$build" || status=1
 fi
 if [ -s output/validation/method-study/table.csv ]; then
   $py tools/plot_method_study.py output/validation/method-study --output doc/figures/method1-vs-method3.png || status=1

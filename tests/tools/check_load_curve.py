@@ -19,6 +19,8 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       between consecutive folds and nowhere else; with --contact-gap, the
       state after the first fold is in contact (gap < G) and the one after
       the last fold out of it (gap > G)
+  firstfold CSV --expected U --abs A
+      the u of the first fold row (the jump-to-contact of an approach) within A of U
   converged CSV --tolerance T [--summary SUMMARY --stopped]
       every row's residual is <= T (the absolute force tolerance the run
       printed); with --summary, its first line says "completed" (or, with
@@ -26,6 +28,8 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
   stiffness CSV --from U1 --to U2 --expected K [--tolerance 0.02]
       the secant dP/du between U1 and U2 on the approach (up to the largest u,
       P interpolated linearly between states) vs the expected value
+  fit     CSV --analytic EXE --gammaL G --gammaW G [--nu V] --expected L [--tolerance 0.02]
+      the Maugis-Dugdale lambda of `cgcm-analytic fit` for the curve vs the expected value
   agree   A.csv B.csv --at U [U ...] [--tolerance REL] [--abs ABS]
       P of the last row at each u = U agrees between the two curves
   bodies  BODY_FORCES.csv [--mirror A B --axis x] [--mirror-tolerance REL] [--zero x y]
@@ -45,7 +49,9 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
 """
 import argparse
 import csv
+import io
 import math
+import subprocess
 import sys
 
 
@@ -96,6 +102,18 @@ def value(c, a):
     return 1
 
 
+def fit(a):
+    """The Maugis-Dugdale lambda that cgcm-analytic fit finds for the curve."""
+    out = subprocess.run([a.analytic, "fit", "--curve", a.csv, "--gammaL", str(a.gammaL), "--gammaW", str(a.gammaW),
+                          "--nu", str(a.nu)], check=True, capture_output=True, text=True).stdout
+    row = list(csv.DictReader(io.StringIO(out)))[0]
+    lam = float(row["lambda"])
+    ratio = lam / a.expected
+    print(f"best-fit lambda = {lam:.6g} (rms {float(row['rms_relative']):.3g} of P); expected {a.expected:.6g}, "
+          f"ratio {ratio:.5f} (tolerance {a.tolerance})")
+    return 0 if abs(ratio - 1.0) <= a.tolerance else 1
+
+
 def stiffness(c, a):
     last = max(range(len(c["u"])), key=lambda k: c["u"][k])
     u, P = c["u"][: last + 1], c["P"][: last + 1]
@@ -127,6 +145,17 @@ def jumps(c, a):
     if ok and a.contact_gap is not None and idx:
         ok = c["gap"][idx[0]] < a.contact_gap < c["gap"][idx[-1]]
     return 0 if ok else 1
+
+
+def firstfold(c, a):
+    """u of the first fold (an approach's jump-to-contact) vs the expected value."""
+    idx = [k for k, f in enumerate(c["fold"]) if f > 0]
+    if not idx:
+        print("no fold")
+        return 1
+    u = c["u"][idx[0]]
+    print(f"first fold at u = {u:.9g} (P {c['P'][idx[0]]:.6g}); expected {a.expected:.9g} +- {a.abs:g}")
+    return 0 if abs(u - a.expected) <= a.abs else 1
 
 
 def folds(c, a):
@@ -288,6 +317,10 @@ def main():
     f.add_argument("--expected", type=int, required=True)
     f.add_argument("--unstable", action="store_true")
     f.add_argument("--contact-gap", type=float)
+    ff = sub.add_parser("firstfold")
+    ff.add_argument("csv")
+    ff.add_argument("--expected", type=float, required=True)
+    ff.add_argument("--abs", type=float, required=True)
     cv = sub.add_parser("converged")
     cv.add_argument("csv")
     cv.add_argument("--tolerance", type=float, required=True)
@@ -307,6 +340,14 @@ def main():
     fm.add_argument("csv")
     fm.add_argument("other")
     fm.add_argument("--tolerance", type=float, default=1e-9)
+    ft = sub.add_parser("fit")
+    ft.add_argument("csv")
+    ft.add_argument("--analytic", required=True)
+    ft.add_argument("--gammaL", type=float, required=True)
+    ft.add_argument("--gammaW", type=float, required=True)
+    ft.add_argument("--nu", type=float, default=0.2)
+    ft.add_argument("--expected", type=float, required=True)
+    ft.add_argument("--tolerance", type=float, default=0.02)
     bd = sub.add_parser("bodies")
     bd.add_argument("csv")
     bd.add_argument("--mirror", type=int, nargs=2)
@@ -322,9 +363,11 @@ def main():
         return agree(a)
     if a.cmd == "foldsmatch":
         return foldsmatch(a)
+    if a.cmd == "fit":
+        return fit(a)
     c = read(a.csv)
     return {"hertz": hertz, "pulloff": pulloff, "value": value, "stiffness": stiffness, "balance": balance,
-            "jumps": jumps, "folds": folds,
+            "jumps": jumps, "folds": folds, "firstfold": firstfold,
             "converged": converged, "returns": returns}[a.cmd](c, a)
 
 

@@ -234,7 +234,9 @@ RCP<const ParameterList> validParameters() {
   solverList.sublist("Newton", false, "Newton's method (NOX) at each load step and in every continuation corrector")
       .setParameters(*solver::NewtonSettings::validParameters());
   solverList.sublist("Linear Solver", false, "linear solves inside Newton (Stratimikos)")
-      .setParameters(*solver::linearSolverValidParameters());
+      .setParameters(*solver::linearSolverValidParameters())
+      .sublist("Stratimikos")
+      .disableRecursiveValidation();  // setParameters copies a sublist's entries, not this flag
 
   auto& output = valid->sublist("Output", false, "what is written where");
   output.set("Directory", "output", "folder for the load curve and the echoed parameters (created if missing)");

@@ -15,7 +15,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
   static Teuchos::RCP<Teuchos::ParameterList> valid;
   if (!valid.is_null()) return valid;
   valid = Teuchos::rcp(new Teuchos::ParameterList("Loading"));
-  valid->set("Approach Path", Teuchos::Array<double>{0.0, 0.1},
+  valid->set("Approach Path", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 0.1)),
              "waypoints of the prescribed displacement u; the run starts at the first and moves linearly "
              "through the others, e.g. {-0.02, 0.06, -0.03}: approach, then retract");
   using namespace validators;

@@ -393,6 +393,15 @@ TEST(Newton, BacktrackingLineSearchConverges) {
   EXPECT_LT(r.residualNorms.back(), 1e-9 * r.residualNorms.front());
 }
 
+TEST(LoadPath, AnEmptyLoadingListGetsTheDocumentedDefaultPath) {
+  // Teuchos::Array has no initializer-list constructor: Array<double>{0.0, 0.1}
+  // was an empty array, and a deck without an Approach Path was refused.
+  ParameterList loading("Loading");
+  loading.validateParametersAndSetDefaults(*solver::LoadPathSettings::validParameters());
+  const auto s = solver::LoadPathSettings::fromParameters(loading);
+  EXPECT_EQ(s.path, (std::vector<Real>{0.0, 0.1}));
+}
+
 TEST(Newton, AnUnconvergedLinearSolveIsNamedInTheFailure) {
   // Two GMRES iterations cannot solve the 3D block's Newton systems to 1e-12:
   // NOX goes on with the poor directions, fails, and the message says why.
