@@ -9,7 +9,8 @@ convergence p = log2(|q_{l-1} - q_{l-2}| / |q_l - q_{l-1}|) of each number
 on the three finest.
 
 A level whose summary.txt says "completed" is not run again (delete its
-folder to redo it).
+folder to redo it); the tables (table.csv, orders.csv) hold every level of
+every deck found in the output folder.
 
     mesh_convergence.py --build build --levels 0 1 2 3 --output output/validation/mesh-convergence
 """
@@ -82,7 +83,6 @@ def main():
     ap.add_argument("--output", default="output/validation/mesh-convergence")
     a = ap.parse_args()
     os.makedirs(a.output, exist_ok=True)
-    table = []
     for name in a.decks:
         for level in a.levels:
             folder = os.path.join(a.output, f"{name}-level{level}")
@@ -95,8 +95,16 @@ def main():
                                     f"Geometry/Mesh Refinement={level}", "Output/Exodus=false",
                                     "Output/Print Steps=false"], stdout=log, stderr=subprocess.STDOUT)
                 print(f"{name} level {level}: ran in {time.time() - t0:.0f} s", flush=True)
+    # the table holds every level run so far, of every deck
+    table = []
+    for name in DECKS:
+        for level in range(7):
+            folder = os.path.join(a.output, f"{name}-level{level}")
+            summary = os.path.join(folder, "summary.txt")
+            if not os.path.exists(summary):
+                continue
             row = {"deck": name, "level": level}
-            row.update(summary_numbers(summary) if os.path.exists(summary) else {"status": "missing"})
+            row.update(summary_numbers(summary))
             if os.path.exists(os.path.join(folder, "load_curve.csv")):
                 c = read_curve(os.path.join(folder, "load_curve.csv"))
                 rows = approach(c)
@@ -113,7 +121,7 @@ def main():
             w.writerow({k: (f"{r[k]:.6g}" if isinstance(r.get(k), float) else r.get(k, "")) for k in keys})
     # observed order on the three finest levels of each deck
     orders = []
-    for name in a.decks:
+    for name in DECKS:
         rows = sorted([r for r in table if r["deck"] == name and r.get("status") == "completed"],
                       key=lambda r: r["level"])
         if len(rows) < 3:
