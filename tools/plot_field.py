@@ -23,6 +23,26 @@ def names(ds, var):
     return [netCDF4.chartostring(n).item() for n in ds.variables[var][:]] if var in ds.variables else []
 
 
+def deformed_xy(ds, step):
+    """Node coordinates at `step` (1-based): reference plus displacement."""
+    return (np.array(ds.variables["coordx"][:]) + np.array(ds.variables["vals_nod_var1"][step - 1]),
+            np.array(ds.variables["coordy"][:]) + np.array(ds.variables["vals_nod_var2"][step - 1]))
+
+
+def deformed_cells(ds, step, field=None):
+    """The cells of every block as polygons on the deformed mesh at `step`
+    (1-based), and the element field's values on them (empty without one)."""
+    x, y = deformed_xy(ds, step)
+    element = names(ds, "name_elem_var")
+    polys, values = [], []
+    for b in range(1, len(names(ds, "eb_names")) + 1):
+        conn = np.array(ds.variables[f"connect{b}"][:]) - 1
+        polys += [np.column_stack((x[c], y[c])) for c in conn]
+        if field in element:
+            values += list(ds.variables[f"vals_elem_var{element.index(field) + 1}eb{b}"][step - 1])
+    return polys, np.array(values)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("results")
@@ -41,19 +61,12 @@ def main():
     step = a.step or (int(np.argmin(gvals[:, globals_.index("P")])) + 1 if "P" in globals_ else nsteps)
     if not 1 <= step <= nsteps:
         sys.exit(f"plot_field: step {step} not in 1 .. {nsteps}")
-    x = np.array(ds.variables["coordx"][:]) + np.array(ds.variables["vals_nod_var1"][step - 1])
-    y = np.array(ds.variables["coordy"][:]) + np.array(ds.variables["vals_nod_var2"][step - 1])
+    x, y = deformed_xy(ds, step)
     nodal, element = names(ds, "name_nod_var"), names(ds, "name_elem_var")
-    blocks = len(names(ds, "eb_names"))
     fig, ax = plt.subplots(figsize=(7, 6))
-    polys, values = [], []
-    for b in range(1, blocks + 1):
-        conn = np.array(ds.variables[f"connect{b}"][:]) - 1
-        polys += [np.column_stack((x[c], y[c])) for c in conn]
-        if a.field in element:
-            values += list(ds.variables[f"vals_elem_var{element.index(a.field) + 1}eb{b}"][step - 1])
+    polys, values = deformed_cells(ds, step, a.field)
     if a.field in element:
-        cells = PolyCollection(polys, array=np.array(values), cmap="viridis", edgecolors="k", linewidths=0.1)
+        cells = PolyCollection(polys, array=values, cmap="viridis", edgecolors="k", linewidths=0.1)
         ax.add_collection(cells)
         fig.colorbar(cells, ax=ax, label=a.field)
     elif a.field in nodal:

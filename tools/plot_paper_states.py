@@ -38,6 +38,7 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+from plot_field import deformed_cells, deformed_xy, names  # noqa: E402
 
 
 def analytic(exe, *args):
@@ -46,13 +47,9 @@ def analytic(exe, *args):
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
-def names(ds, var):
-    return [netCDF4.chartostring(n).item() for n in ds.variables[var][:]] if var in ds.variables else []
-
-
 class Results:
-    """The Exodus file of one run: globals per step, deformed coordinates,
-    element and nodal fields."""
+    """The Exodus file of one run: globals per step (0-based steps here),
+    deformed coordinates, element and nodal fields (tools/plot_field.py)."""
 
     def __init__(self, path):
         self.ds = netCDF4.Dataset(path)
@@ -60,17 +57,10 @@ class Results:
         vals = np.array(self.ds.variables["vals_glo_var"][:])
         self.glob = {n: vals[:, i] for i, n in enumerate(g)}
         self.nodal = names(self.ds, "name_nod_var")
-        self.element = names(self.ds, "name_elem_var")
-        self.blocks = names(self.ds, "eb_names")
         self.sets = names(self.ds, "ns_names")
 
-    def steps(self):
-        return len(self.glob["u"])
-
     def xy(self, step):
-        nod = lambda name: np.array(self.ds.variables[f"vals_nod_var{self.nodal.index(name) + 1}"][step])
-        return (np.array(self.ds.variables["coordx"][:]) + nod("displacement_x"),
-                np.array(self.ds.variables["coordy"][:]) + nod("displacement_y"))
+        return deformed_xy(self.ds, step + 1)
 
     def nodal_field(self, name, step):
         return np.array(self.ds.variables[f"vals_nod_var{self.nodal.index(name) + 1}"][step])
@@ -80,14 +70,7 @@ class Results:
 
     def cells(self, field, step):
         """(polygons, values) of every block on the deformed mesh."""
-        x, y = self.xy(step)
-        polys, values = [], []
-        k = self.element.index(field) + 1
-        for b in range(1, len(self.blocks) + 1):
-            conn = np.array(self.ds.variables[f"connect{b}"][:]) - 1
-            polys += [np.column_stack((x[c], y[c])) for c in conn]
-            values += list(self.ds.variables[f"vals_elem_var{k}eb{b}"][step])
-        return polys, np.array(values)
+        return deformed_cells(self.ds, step + 1, field)
 
 
 def approach_steps(res):
@@ -101,17 +84,12 @@ def md_radius_at(exe, lam, u, common):
     """M-D contact radius (CGCM units) whose approach is u on the
     displacement-control branch (a beyond the minimum of u(a))."""
     c = analytic(exe, "curve", "--model", "md", "--lambda", lam, "--a-max", 4, "--points", 2000, *common)
-    a, uc, P = c["a_cgcm"], c["u_cgcm"], c["P_cgcm"]
-    i0 = int(np.argmin(uc))
-    a, uc, P = a[i0:], uc[i0:], P[i0:]
+    i0 = int(np.argmin(c["u_cgcm"]))  # u rises with a beyond here
+    uc = c["u_cgcm"][i0:]
     if not (uc[0] <= u <= uc[-1]):
         return float("nan"), float("nan"), float("nan")
-    j = int(np.searchsorted(uc, u))
-    t = (u - uc[j - 1]) / (uc[j] - uc[j - 1])
-    aj = a[j - 1] + t * (a[j] - a[j - 1])
-    Pj = P[j - 1] + t * (P[j] - P[j - 1])
-    # the same radius in the tool's own normalisation, for `pressure` and `stress`
-    return aj, Pj, aj / c["a_cgcm"][-1] * c["a"][-1]
+    # (a, P) in CGCM units, and a in the tool's own normalisation for `pressure` and `stress`
+    return tuple(float(np.interp(u, uc, c[k][i0:])) for k in ("a_cgcm", "P_cgcm", "a"))
 
 
 def surface_pressure(res, step):

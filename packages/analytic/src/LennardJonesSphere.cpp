@@ -614,7 +614,7 @@ LjSphereCurve ljSphereRetraction(Real mu, const LjSphereOptions& opt) {
       return last.load;
     };
     try {
-      const Real best = detail::brentMinimise(loadAt, lo.delta, hi.delta, 0.0, 1e-4 * d, "LJ sphere minimum").first;
+      const Real best = detail::bracketedMinimum(loadAt, lo.delta, hi.delta, 0.0, 1e-4 * d, "LJ sphere minimum").first;
       Probe atBest;
       if (probeAt(last, best, atBest) && atBest.load <= mid.load) mid = std::move(atBest);
     } catch (const NumericalError&) {

@@ -236,7 +236,7 @@ FitResult fitMaugisDugdale(const LoadCurve& curve, const CgcmMapping& map,
   auto bestOffset = [&](Real logLambda) {
     const MdBranch branch(std::exp(logLambda));
     if (!options.fitOffset) return std::make_pair(options.offset, residuals(branch, options.offset).sumSq);
-    return detail::brentMinimise([&](Real off) { return residuals(branch, off).sumSq; },
+    return detail::bracketedMinimum([&](Real off) { return residuals(branch, off).sumSq; },
                                  options.offset - bound, options.offset + bound, 0.0, 1e-10 * bound,
                                  "M-D fit (offset)");
   };
@@ -255,7 +255,7 @@ FitResult fitMaugisDugdale(const LoadCurve& curve, const CgcmMapping& map,
   }
   const Real lo = xs[std::max(0, best - 1)];
   const Real hi = xs[std::min(n - 1, best + 1)];
-  const auto [x, fx] = detail::brentMinimise([&](Real xl) { return bestOffset(xl).second; }, lo, hi,
+  const auto [x, fx] = detail::bracketedMinimum([&](Real xl) { return bestOffset(xl).second; }, lo, hi,
                                              0.0, 1e-10, "M-D fit (lambda)");
   FitResult res;
   res.lambda = std::exp(x);

@@ -21,7 +21,7 @@ namespace cgcm::analytic::detail {
 /// Root of f on [a, b] with f(a) = fa, f(b) = fb of opposite signs, to
 /// |Δx| ≤ tol + 4 eps|x| (TOMS 748: bracketing, superlinear).
 template <class F>
-Real brentRoot(F&& f, Real a, Real b, Real fa, Real fb, Real tol, const std::string& what) {
+Real bracketedRoot(F&& f, Real a, Real b, Real fa, Real fb, Real tol, const std::string& what) {
   if (fa == 0) return a;
   if (fb == 0) return b;
   if ((fa > 0) == (fb > 0)) {
@@ -53,10 +53,10 @@ Real brentRoot(F&& f, Real a, Real b, Real fa, Real fb, Real tol, const std::str
 
 /// Minimum of f on [a, b] (Brent: golden section with parabolic steps);
 /// returns (x, f(x)) with x located to about relTol |x| + absTol, but not
-/// below √eps |x|, the accuracy a minimum's location allows in double.
+/// below 2^-26 |x|: Boost caps the precision at half the digits (√eps, the
+/// limit for a minimum whose value carries round-off).
 template <class F>
-std::pair<Real, Real> brentMinimise(F&& f, Real a, Real b, Real relTol, Real absTol,
-                                    const std::string& what) {
+std::pair<Real, Real> bracketedMinimum(F&& f, Real a, Real b, Real relTol, Real absTol, const std::string& what) {
   // Boost's tolerance is relative (2^(1-bits) |x|); an absolute one becomes
   // relative to the bracket's largest |x|, which is never looser.
   const Real scale = std::fmax(std::fabs(a), std::fabs(b));

@@ -32,7 +32,7 @@ PullOffPoint mdPoint(Real lambda, Real a, Real sGuess) {
 }
 
 /// The minimum of P̄ (which = load) or δ̄ (which = approach) over the scan,
-/// refined by Brent's root finder on the analytic slope. Returns false if the
+/// refined by a bracketing root finder (TOMS 748) on the analytic slope. Returns false if the
 /// slope is positive at the smallest scanned radius and has no − to + sign
 /// change (the minimum is the ā → 0 end of the branch).
 bool mdMinimum(Real lambda, const std::vector<Sample>& scan, bool load, PullOffPoint& out) {
@@ -68,7 +68,7 @@ bool mdMinimum(Real lambda, const std::vector<Sample>& scan, bool load, PullOffP
   std::ostringstream what;
   what << "Maugis-Dugdale " << (load ? "load" : "displacement") << "-control pull-off (lambda = "
        << lambda << ")";
-  const Real a = detail::brentRoot(f, lo.a, hi.a, slope(lo), slope(hi), 1e-14 * hi.a, what.str());
+  const Real a = detail::bracketedRoot(f, lo.a, hi.a, slope(lo), slope(hi), 1e-14 * hi.a, what.str());
   out = mdPoint(lambda, a, lo.sol.s);
   // The extremum is a minimum: it cannot exceed the bracketing samples.
   const Real refined = load ? out.load : out.approach;

@@ -30,6 +30,17 @@ struct BlockFailures {
   LocalIndex first = 0;  ///< the lowest failed cell of the block, if count > 0
 };
 
+// Reference and current coordinates of cell c.
+template <int nn, int dim>
+KOKKOS_INLINE_FUNCTION void gatherCell(const LocalIndex c, const DofView& dofLids, const CoordView& Xref,
+                                       const BulkPart::ConstVectorView& u, Real (&X)[nn][dim], Real (&x)[nn][dim]) {
+  for (int a = 0; a < nn; ++a)
+    for (int i = 0; i < dim; ++i) {
+      X[a][i] = Xref(c, a, i);
+      x[a][i] = X[a][i] + u(dofLids(c, a * dim + i), 0);
+    }
+}
+
 // Evaluates one block with a fixed (formulation, element) kernel; returns the
 // number of cells that turned inside out and the first of them.
 template <class Kernel>
@@ -45,11 +56,7 @@ BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, cons
       "cgcm::assembleBlock", Kokkos::RangePolicy<ExecSpace>(0, numCells),
       [=](const LocalIndex c, int& failed) {
         Real X[nn][dim], x[nn][dim];
-        for (int a = 0; a < nn; ++a)
-          for (int i = 0; i < dim; ++i) {
-            X[a][i] = Xref(c, a, i);
-            x[a][i] = X[a][i] + u(dofLids(c, a * dim + i), 0);
-          }
+        gatherCell(c, dofLids, Xref, u, X, x);
         Real fe[nd];
         bool ok;
         if (withTangent) {
@@ -77,11 +84,7 @@ BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, cons
       "cgcm::firstInvertedCell", Kokkos::RangePolicy<ExecSpace>(0, numCells),
       [=](const LocalIndex c, LocalIndex& lowest) {
         Real X[nn][dim], x[nn][dim], fe[nd];
-        for (int a = 0; a < nn; ++a)
-          for (int i = 0; i < dim; ++i) {
-            X[a][i] = Xref(c, a, i);
-            x[a][i] = X[a][i] + u(dofLids(c, a * dim + i), 0);
-          }
+        gatherCell(c, dofLids, Xref, u, X, x);
         if (!Kernel::residual(X, x, mat, fe) && c < lowest) lowest = c;
       },
       Kokkos::Min<LocalIndex>(first));
@@ -109,13 +112,11 @@ BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formula
     d.numNodes = nn;
     d.name = blk.name;
     d.cells = cells;
-    d.firstNodes.resize(cells.size());
     d.dofLids = DofView("dofLids", cells.size(), nn * dim_);
     d.X = CoordView("X", cells.size(), nn, dim_);
     for (std::size_t k = 0; k < cells.size(); ++k)
       for (int a = 0; a < nn; ++a) {
         const LocalIndex node = blk.connectivity[std::size_t(cells[k]) * nn + a];
-        if (a == 0) d.firstNodes[k] = node;
         for (int i = 0; i < dim_; ++i) {
           d.dofLids(k, a * dim_ + i) = overlap_->getLocalElement(dofs.dof(node, i));
           d.X(k, a, i) = mesh.coord(node, i);
@@ -163,10 +164,9 @@ void BulkPart::setColumnMap(const Map& columns) {
   }
 }
 
-int BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const {
+BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const {
   using namespace fem;
-  int failures = 0;
-  firstFailure_.clear();
+  CellFailures out;
   for (const auto& b : blocks_) {
     BlockFailures bf;
     switch (formulation_) {
@@ -183,18 +183,18 @@ int BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const Loca
           bf = assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
         break;
     }
-    if (bf.count > 0 && firstFailure_.empty()) {
-      const std::size_t c = bf.first;
+    if (bf.count > 0 && out.first.empty()) {
+      const LocalIndex c = bf.first;
       std::ostringstream where;
-      where << "cell " << b.cells[c] << " of block \"" << b.name << "\" (its first node " << b.firstNodes[c]
-            << " at X = (";
+      where << "cell " << b.cells[c] << " of block \"" << b.name << "\" (its first node "
+            << overlap_->getGlobalElement(b.dofLids(c, 0)) / dim_ << " at X = (";
       for (int i = 0; i < dim_; ++i) where << (i ? ", " : "") << b.X(c, 0, i);
       where << "))";
-      firstFailure_ = where.str();
+      out.first = where.str();
     }
-    failures += bf.count;
+    out.count += bf.count;
   }
-  return failures;
+  return out;
 }
 
 }  // namespace cgcm::assembly

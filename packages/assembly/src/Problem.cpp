@@ -16,17 +16,17 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// The message of the lowest rank that has one (every rank gets it), or
-/// `fallback` if none has. Collective; only on the failure path.
-std::string firstOnAnyRank(const Teuchos::Comm<int>& comm, const std::string& local, const std::string& fallback) {
+/// The message of the lowest rank that has one, on every rank (empty if none
+/// has). Collective; only on the failure path.
+std::string firstOnAnyRank(const Teuchos::Comm<int>& comm, const std::string& local) {
   const int mine = local.empty() ? comm.getSize() : comm.getRank();
   int root = comm.getSize();
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &mine, &root);
-  if (root == comm.getSize()) return fallback;
+  if (root == comm.getSize()) return {};
   int length = static_cast<int>(local.size());
   Teuchos::broadcast(comm, root, 1, &length);
   std::string text = comm.getRank() == root ? local : std::string(static_cast<std::size_t>(length), ' ');
-  if (length > 0) Teuchos::broadcast(comm, root, length, text.data());
+  Teuchos::broadcast(comm, root, length, text.data());
   return text;
 }
 
@@ -112,8 +112,9 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
     BulkPart::LocalMatrix lclJ;
     if (J) lclJ = J->getLocalMatrixDevice();
     for (const auto& part : bulk_) {
-      failures += part.assemble(uv, fv, J ? &lclJ : nullptr);
-      if (firstInverted.empty()) firstInverted = part.firstFailure();
+      const auto cells = part.assemble(uv, fv, J ? &lclJ : nullptr);
+      failures += cells.count;
+      if (firstInverted.empty()) firstInverted = cells.first;
     }
   }
   double interactionSeconds = 0.0;
@@ -124,10 +125,13 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
     interactionSeconds = secondsSince(ti);
     timings_.search += interactionPart_->lastSearchSeconds();
   }
-  // every rank learns of every failure here, before the collective end of assembly
+  // A NaN or Inf among this rank's contributions reaches f in the export below.
+  const std::string firstNaN = firstNonFinite(*fOverlap_);
+  // every rank learns of every failure here, in one reduction, before the collective end of assembly
   const Teuchos::Comm<int>& comm = *dofs_->comm();
-  int counts[3] = {failures, interaction.dropped, interaction.failure.empty() ? 0 : 1}, globalCounts[3] = {0, 0, 0};
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, counts, globalCounts);
+  int counts[4] = {failures, interaction.dropped, interaction.failure.empty() ? 0 : 1, firstNaN.empty() ? 0 : 1};
+  int globalCounts[4] = {0, 0, 0, 0};
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, counts, globalCounts);
   if (J) Tpetra::endAssembly(*J);
   f.putScalar(0.0);
   f.doExport(*fOverlap_, *exporter_, Tpetra::ADD);
@@ -137,32 +141,29 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
   } else {
     timings_.residual += secondsSince(t0) - interactionSeconds;
   }
-  if (globalCounts[2] > 0) throw NumericalError(firstOnAnyRank(comm, interaction.failure, "interaction failed"));
+  if (globalCounts[2] > 0) throw NumericalError(firstOnAnyRank(comm, interaction.failure));
   if (globalCounts[0] > 0)
     throw InvertedElementError(std::to_string(globalCounts[0]) + " element(s) inverted (J <= 0), the first " +
-                               firstOnAnyRank(comm, firstInverted, "on another rank"));
+                               firstOnAnyRank(comm, firstInverted));
   if (globalCounts[1] > 0) {
     graphOutdated_ = true;
     throw GraphOutdatedError(std::to_string(globalCounts[1]) +
                              " interaction tangent entries fell outside the matrix graph (the first at " +
-                             firstOnAnyRank(comm, interaction.firstDropped, "another rank") + ")");
+                             firstOnAnyRank(comm, interaction.firstDropped) + ")");
   }
-  checkFinite(f);
+  if (globalCounts[3] > 0) throw NumericalError("the residual is not finite at " + firstOnAnyRank(comm, firstNaN));
 }
 
-void Problem::checkFinite(const Vector& f) const {
-  const auto values = f.getLocalViewHost(Tpetra::Access::ReadOnly);
-  std::string first;
-  for (std::size_t k = 0; k < values.extent(0) && first.empty(); ++k) {
+std::string Problem::firstNonFinite(const Vector& v) const {
+  const auto values = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t k = 0; k < values.extent(0); ++k) {
     if (std::isfinite(values(k, 0))) continue;
-    const GlobalIndex dof = f.getMap()->getGlobalElement(LocalIndex(k));
+    const GlobalIndex dof = v.getMap()->getGlobalElement(LocalIndex(k));
     const int perNode = dofs_->dofsPerNode();
-    first = "node " + std::to_string(dof / perNode) + ", component " + std::to_string(dof % perNode) + " (" +
-            std::to_string(values(k, 0)) + ")";
+    return "node " + std::to_string(dof / perNode) + ", component " + std::to_string(dof % perNode) + " (" +
+           std::to_string(values(k, 0)) + ")";
   }
-  int bad = first.empty() ? 0 : 1, anyBad = 0;
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_MAX, 1, &bad, &anyBad);
-  if (anyBad) throw NumericalError("the residual is not finite at " + firstOnAnyRank(*dofs_->comm(), first, "?"));
+  return {};
 }
 
 void Problem::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor) {

@@ -40,13 +40,14 @@ class BulkPart {
   /// Caches the matrix column ids of the cells' dofs (after every new graph).
   void setColumnMap(const Map& columns);
 
+  /// Cells that turned inside out (J <= 0); their contributions are left out.
+  struct CellFailures {
+    int count = 0;
+    std::string first;  ///< "cell 12 of block \"b\" (its first node 40 at X = (...))", empty if none
+  };
   /// f += f_int of the cells, and J += their tangent if J is given (J's
-  /// column ids must be those of setColumnMap). Returns the number of cells
-  /// that turned inside out (J <= 0); their contributions are left out.
-  int assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const;
-  /// The first inverted cell of the last assemble ("cell 12 of block \"b\" (its
-  /// first node 40 at X = (...))"), empty if none.
-  const std::string& firstFailure() const { return firstFailure_; }
+  /// column ids must be those of setColumnMap).
+  CellFailures assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const;
 
  private:
   struct Block {
@@ -57,14 +58,12 @@ class BulkPart {
     Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i], reference coordinates
     std::string name;                                         // the mesh block's
     std::vector<LocalIndex> cells;                            // block-local cell index in the mesh
-    std::vector<LocalIndex> firstNodes;                       // mesh node of each cell's first vertex
   };
   const Map* overlap_;
   Formulation formulation_;
   int dim_;
   material::NeoHookean material_;
   std::vector<Block> blocks_;
-  mutable std::string firstFailure_;
 };
 
 }  // namespace cgcm::assembly

@@ -6,6 +6,7 @@
 // overlap vectors and the export of shared rows to their owners, and the
 // timings. Parts write into the overlap views; they do not see each other.
 #include <array>
+#include <string>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -115,10 +116,10 @@ class Problem {
   /// Component `component` of `v` at `node`, on every rank (collective).
   Real nodeValue(const Vector& v, LocalIndex node, int component) const;
 
-  /// Throws NumericalError naming the first node (and component) whose entry
-  /// of the owned vector f is NaN or Inf; evaluate calls it on every residual.
-  /// Collective.
-  void checkFinite(const Vector& f) const;
+  /// Where v (a vector on one of the dof maps) is first NaN or Inf on this
+  /// rank: "node N, component i (nan)", empty if nowhere. evaluate reports a
+  /// non-finite residual with it.
+  std::string firstNonFinite(const Vector& v) const;
   /// Sum of component `component` of the owned entries of `f` over a node set (collective).
   Real sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const;
 

@@ -10,25 +10,25 @@
 
 namespace cgcm::validators {
 
-/// A double ≥ min.
-inline Teuchos::RCP<Teuchos::EnhancedNumberValidator<double>> atLeast(double min) {
-  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
+namespace detail {
+template <class T>
+Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> minimum(T min) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<T>());
   v->setMin(min);
   return v;
 }
+}  // namespace detail
 
+// The type is in the name: a validator of the wrong type would refuse every
+// value of its parameter, so atLeast(2) must not quietly mean an int.
+/// A double ≥ min.
+inline Teuchos::RCP<Teuchos::EnhancedNumberValidator<double>> atLeast(double min) { return detail::minimum(min); }
 /// A double in [min, max].
 inline Teuchos::RCP<Teuchos::EnhancedNumberValidator<double>> between(double min, double max) {
   return Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(min, max));
 }
-
 /// An int ≥ min.
-inline Teuchos::RCP<Teuchos::EnhancedNumberValidator<int>> intAtLeast(int min) {
-  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
-  v->setMin(min);
-  return v;
-}
-
+inline Teuchos::RCP<Teuchos::EnhancedNumberValidator<int>> intAtLeast(int min) { return detail::minimum(min); }
 /// An int in [min, max].
 inline Teuchos::RCP<Teuchos::EnhancedNumberValidator<int>> intBetween(int min, int max) {
   return Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(min, max));
