@@ -130,11 +130,16 @@ RCP<const ParameterList> validParameters() {
   material.set("Volumetric Energy", "(Lambda/2)(ln J)^2",
                "U(J): \"(Lambda/2)(ln J)^2\" (default) or \"(Lambda/4)(J^2-1-2 ln J)\"",
                choices({"(Lambda/2)(ln J)^2", "(Lambda/4)(J^2-1-2 ln J)"}));
+  material.set("Kinematics", "finite strain",
+               "\"finite strain\" (default, Neo-Hookean) or \"small strain\": the model linearised about the "
+               "reference configuration (linear elasticity with the same Y, nu), to measure what finite strain "
+               "changes",
+               choices({"finite strain", "small strain"}));
 
   valid->sublist("Bodies", false,
                  "per-body materials: a sublist named after a body of the mesh (the <name> of its \"body:<name>\" "
                  "group, or a built-in geometry's \"sphere\", \"half-space\", \"second sphere\", \"block\") "
-                 "with any of Young's Modulus, Poisson's Ratio, Volumetric Energy; the rest comes from Material. "
+                 "with any of Young's Modulus, Poisson's Ratio, Volumetric Energy, Kinematics; the rest comes from Material. "
                  "The interaction scales (gammaL, gammaW, the force unit) use Material's Young's modulus")
       .disableRecursiveValidation();
 
@@ -668,6 +673,17 @@ void checkBodiesAreHeld(const ProblemSetup& s) {
   }
 }
 
+// The material of a validated Material (or Bodies/<name>) list.
+material::NeoHookean materialFrom(const ParameterList& mat) {
+  const auto law = mat.get<std::string>("Volumetric Energy") == "(Lambda/2)(ln J)^2"
+                       ? material::VolumetricLaw::LogSquared
+                       : material::VolumetricLaw::QuadraticJ;
+  auto m = material::NeoHookean::fromYoungPoisson(mat.get<double>("Young's Modulus"),
+                                                  mat.get<double>("Poisson's Ratio"), law);
+  if (mat.get<std::string>("Kinematics") == "small strain") m.kinematics = material::Kinematics::SmallStrain;
+  return m;
+}
+
 // Bodies/<name> sublists: a material per named body, validated like Material.
 void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
   if (!deck.isSublist("Bodies")) return;
@@ -694,7 +710,7 @@ void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
       const std::string key = given.name(p), path = "Bodies/" + name + "/" + key;
       if (!validMaterial.isParameter(key))
         throw InputError(path + ": not a material parameter; allowed: Young's Modulus, Poisson's Ratio, Volumetric "
-                         "Energy");
+                         "Energy, Kinematics");
       const auto& valid = validMaterial.getEntry(key);
       Teuchos::ParameterEntry entry = given.entry(p);
       if (valid.isType<double>() && entry.isType<int>()) entry.setValue(double(entry.getValue<int>(nullptr)));
@@ -714,12 +730,8 @@ void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
       }
       own.setEntry(key, entry);
     }
-    const auto law = own.get<std::string>("Volumetric Energy") == "(Lambda/2)(ln J)^2"
-                         ? material::VolumetricLaw::LogSquared
-                         : material::VolumetricLaw::QuadraticJ;
     hasEntry[found - names.begin()] = 1;
-    materials[found - names.begin()] = material::NeoHookean::fromYoungPoisson(
-        own.get<double>("Young's Modulus"), own.get<double>("Poisson's Ratio"), law);
+    materials[found - names.begin()] = materialFrom(own);
     std::ostringstream o;
     o << "body \"" << name << "\": Young's modulus " << own.get<double>("Young's Modulus") << ", Poisson's ratio "
       << own.get<double>("Poisson's Ratio");
@@ -752,12 +764,9 @@ void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath) 
 ProblemSetup buildProblem(const ParameterList& deck) {
   ProblemSetup s;
   s.formulation = parseFormulation(deck.sublist("Problem").get<std::string>("Formulation"));
-  const auto& mat = deck.sublist("Material");
-  const auto law = mat.get<std::string>("Volumetric Energy") == "(Lambda/2)(ln J)^2"
-                       ? material::VolumetricLaw::LogSquared
-                       : material::VolumetricLaw::QuadraticJ;
-  s.material = material::NeoHookean::fromYoungPoisson(mat.get<double>("Young's Modulus"),
-                                                      mat.get<double>("Poisson's Ratio"), law);
+  s.material = materialFrom(deck.sublist("Material"));
+  if (s.material.kinematics == material::Kinematics::SmallStrain)
+    s.report.push_back("Material/Kinematics = small strain: linear elasticity on the reference configuration");
 
   const auto& geometry = deck.sublist("Geometry");
   const std::string type = geometry.get<std::string>("Type");

@@ -388,6 +388,92 @@ TYPED_TEST(SolidKernelTest, PatchTestHomogeneousDeformation) {
   }
 }
 
+// (4b) Small strain is the linearisation of the finite-strain kernel about
+// the reference configuration: its tangent is the finite-strain tangent at
+// x = X for every x, its force the finite-strain force to second order in the
+// displacement, its force the derivative of its energy, and it passes the
+// patch test.
+TYPED_TEST(SolidKernelTest, SmallStrainIsTheLinearisation) {
+  using K = TypeParam;
+  using cgcm::material::Kinematics;
+  std::mt19937 rng(505);
+  for (VolumetricLaw law : kLaws) {
+    const NeoHookean finite = NeoHookean::fromYoungPoisson(1.0, 0.3, law);
+    NeoHookean small = finite;
+    small.kinematics = Kinematics::SmallStrain;
+    for (int trial = 0; trial < 3; ++trial) {
+      Real X[K::numNodes][K::dim], x[K::numNodes][K::dim];
+      Real f0[K::numDofs], K0[K::numDofs][K::numDofs], fs[K::numDofs], Ks[K::numDofs][K::numDofs];
+      randomElement<K>(rng, 0.15, X);
+      randomCurrent<K>(rng, X, x);
+      ASSERT_TRUE(K::residualAndTangent(X, X, finite, f0, K0));
+      ASSERT_TRUE(K::residualAndTangent(X, x, small, fs, Ks));
+      Real kmax = 0.0, err = 0.0;
+      for (int d = 0; d < K::numDofs; ++d)
+        for (int e = 0; e < K::numDofs; ++e) {
+          kmax = std::max(kmax, std::abs(K0[d][e]));
+          err = std::max(err, std::abs(Ks[d][e] - K0[d][e]));
+        }
+      EXPECT_LE(err, 1e-13 * kmax) << "tangent at x != X, trial " << trial;
+
+      // f_small(X + t du) - f_finite(X + t du) = O(t^2): halving t quarters it.
+      Real du[K::numNodes][K::dim];
+      for (int a = 0; a < K::numNodes; ++a)
+        for (int i = 0; i < K::dim; ++i) du[a][i] = x[a][i] - X[a][i];
+      Real gap[2];
+      for (int h = 0; h < 2; ++h) {
+        const Real t = h == 0 ? 1e-3 : 5e-4;
+        Real xt[K::numNodes][K::dim], ff[K::numDofs], fl[K::numDofs];
+        for (int a = 0; a < K::numNodes; ++a)
+          for (int i = 0; i < K::dim; ++i) xt[a][i] = X[a][i] + t * du[a][i];
+        ASSERT_TRUE(K::residual(X, xt, finite, ff));
+        ASSERT_TRUE(K::residual(X, xt, small, fl));
+        gap[h] = 0.0;
+        for (int d = 0; d < K::numDofs; ++d) gap[h] = std::max(gap[h], std::abs(ff[d] - fl[d]));
+        ASSERT_GT(maxAbsVec<K>(fl), 1e2 * gap[h]) << "the two differ at first order, t = " << t;
+      }
+      EXPECT_NEAR(gap[0] / gap[1], 4.0, 0.05) << "trial " << trial;
+
+      // f = dW/dx by central differences (W quadratic: exact up to rounding).
+      Real fd[K::numDofs];
+      for (int a = 0; a < K::numNodes; ++a)
+        for (int i = 0; i < K::dim; ++i) {
+          Real xp[K::numNodes][K::dim], xm[K::numNodes][K::dim], Wp, Wm;
+          std::copy(&x[0][0], &x[0][0] + K::numDofs, &xp[0][0]);
+          std::copy(&x[0][0], &x[0][0] + K::numDofs, &xm[0][0]);
+          xp[a][i] += 1e-4;
+          xm[a][i] -= 1e-4;
+          ASSERT_TRUE(K::energy(X, xp, small, Wp));
+          ASSERT_TRUE(K::energy(X, xm, small, Wm));
+          fd[a * K::dim + i] = (Wp - Wm) / 2e-4;
+        }
+      for (int d = 0; d < K::numDofs; ++d) EXPECT_NEAR(fd[d], fs[d], 1e-9 * maxAbsVec<K>(fs)) << "dof " << d;
+    }
+  }
+  // patch test: a homogeneous displacement gradient leaves the interior node in equilibrium
+  Patch p = makePatch<K>(2, 1.0, isAxisymmetric<K>() ? 1.0 : 0.0);
+  const int c = p.interior[0];
+  p.X[c][0] += 0.2;
+  p.X[c][1] -= 0.15;
+  if (K::dim == 3) p.X[c][2] += 0.1;
+  orientTets(p);
+  NeoHookean small = NeoHookean::fromYoungPoisson(1.0, 0.3);
+  small.kinematics = Kinematics::SmallStrain;
+  Mat3 F = randomF(rng, 0.3, K::dim);
+  if (isAxisymmetric<K>()) F.a[0][1] = F.a[1][0] = 0.0;
+  std::vector<std::array<Real, 3>> x(p.X.size());
+  for (size_t n = 0; n < p.X.size(); ++n) {
+    x[n] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < K::dim; ++i)
+      for (int j = 0; j < K::dim; ++j) x[n][i] += F.a[i][j] * p.X[n][j];
+  }
+  std::vector<Real> R;
+  ASSERT_TRUE(assemble<K>(p, x, small, R));
+  Real rmax = 0.0;
+  for (Real v : R) rmax = std::max(rmax, std::abs(v));
+  for (int i = 0; i < K::dim; ++i) EXPECT_LE(std::abs(R[c * K::dim + i]), 1e-12 * rmax) << "component " << i;
+}
+
 // (5) Inverted or degenerate elements are rejected.
 TYPED_TEST(SolidKernelTest, InvertedElementReturnsFalse) {
   using K = TypeParam;

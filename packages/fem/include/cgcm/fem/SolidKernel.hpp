@@ -20,6 +20,11 @@
 // contained in the spatial form); K is symmetric. Element DOFs are node-major:
 // dof = a*dim + i.
 //
+// Small strain (mat.kinematics == SmallStrain): the same expressions on the
+// reference configuration (g_a = ∂N_a/∂X, h_a = N_a / R, dV), with the
+// linear stress σ = c : ε and c = (Λ, μ); the geometric term G_ai : (G_bk σ)
+// is absent, so K is constant.
+//
 // The kernels return false, leaving their outputs unspecified, when the
 // reference or current element Jacobian determinant, J = det F or (in
 // axisymmetry) the reference or current radius is <= 0 at a quadrature point.
@@ -53,20 +58,21 @@ struct SolidKernel {
   /// Kinematics at one quadrature point.
   struct PointKinematics {
     Real N[numNodes];        ///< shape functions
-    Real g[numNodes][dim];   ///< current gradients ∂N_a/∂x (filled only when requested)
-    Real invR;               ///< 1/r at the point (axisymmetric), else 0
+    Real g[numNodes][dim];   ///< gradients ∂N_a/∂x (∂N_a/∂X on the reference; filled only when requested)
+    Real invR;               ///< 1/r (1/R on the reference) at the point (axisymmetric), else 0
     Mat3 F;                  ///< deformation gradient (3×3; F₃₃ = 1 or r/R in 2D)
     Real J;                  ///< det F
-    Real dv;                 ///< current volume weight of the point
+    Real dv;                 ///< current volume weight of the point (reference on the reference)
     Real dV;                 ///< reference volume weight of the point
   };
 
-  /// Kinematics at quadrature point q. With withGradients = false the current
-  /// gradients g are not computed (energy, stress output). Returns false for a
-  /// degenerate or inverted point.
+  /// Kinematics at quadrature point q. With withGradients = false the
+  /// gradients g are not computed (energy, stress output). With onReference
+  /// (small strain) g, invR and dv are those of the reference configuration.
+  /// Returns false for a degenerate or inverted point.
   template <bool withGradients>
   KOKKOS_INLINE_FUNCTION static bool kinematics(int q, const Coordinates& X, const Coordinates& x,
-                                                PointKinematics& k) {
+                                                PointKinematics& k, bool onReference = false) {
     Real dN[numNodes][dim];
     Real w;
     Element::shapeAtQp(q, k.N, dN, w);
@@ -110,10 +116,14 @@ struct SolidKernel {
       k.J = detJx / detJX;
     }
     if (!(k.J > 0.0)) return false;
+    if (onReference) {
+      k.dv = k.dV;
+      if constexpr (axisymmetric) k.invR = k.F.a[2][2] * k.invR;  // r/R · 1/r
+    }
 
     if constexpr (withGradients) {
-      // g_a = Jx⁻ᵀ ∂N_a/∂ξ
-      const Mat<dim> iJx = inverse(Jx, detJx);
+      // g_a = Jx⁻ᵀ ∂N_a/∂ξ (JX on the reference)
+      const Mat<dim> iJx = onReference ? inverse(JX, detJX) : inverse(Jx, detJx);
       for (int a = 0; a < numNodes; ++a)
         for (int i = 0; i < dim; ++i) {
           Real s = 0.0;
@@ -137,14 +147,21 @@ struct SolidKernel {
     return b;
   }
 
+  /// σ at the point: Neo-Hookean Cauchy stress, or the small-strain stress.
+  KOKKOS_INLINE_FUNCTION static Mat3 stress(const material::NeoHookean& mat, const PointKinematics& k) {
+    if (mat.kinematics == material::Kinematics::SmallStrain) return mat.linearStress(k.F);
+    return mat.cauchy(leftCauchyGreen(k.F), k.J);
+  }
+
   /// Internal force f = ∫ B_ULᵀ σ dv.
   KOKKOS_INLINE_FUNCTION static bool residual(const Coordinates& X, const Coordinates& x,
                                               const material::NeoHookean& mat, Vector& f) {
     for (int d = 0; d < numDofs; ++d) f[d] = 0.0;
+    const bool small = mat.kinematics == material::Kinematics::SmallStrain;
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
-      if (!kinematics<true>(q, X, x, k)) return false;
-      const Mat3 sigma = mat.cauchy(leftCauchyGreen(k.F), k.J);
+      if (!kinematics<true>(q, X, x, k, small)) return false;
+      const Mat3 sigma = stress(mat, k);
       for (int a = 0; a < numNodes; ++a) {
         for (int i = 0; i < dim; ++i) {
           Real s = 0.0;
@@ -165,11 +182,14 @@ struct SolidKernel {
     for (int d = 0; d < numDofs; ++d)
       for (int e = 0; e < numDofs; ++e) K[d][e] = 0.0;
 
+    const bool small = mat.kinematics == material::Kinematics::SmallStrain;
+    const Real geometric = small ? 0.0 : 1.0;  // the geometric (initial-stress) term's weight
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
-      if (!kinematics<true>(q, X, x, k)) return false;
-      const Mat3 sigma = mat.cauchy(leftCauchyGreen(k.F), k.J);
-      const material::IsotropicModuli c = mat.spatialModuli(k.J);
+      if (!kinematics<true>(q, X, x, k, small)) return false;
+      const Mat3 sigma = stress(mat, k);
+      const material::IsotropicModuli c =
+          small ? material::IsotropicModuli{mat.lambda, mat.mu} : mat.spatialModuli(k.J);
       const Real dv = k.dv;
       const Real lam = c.lambdaEff * dv;
       const Real mu = c.muEff * dv;
@@ -187,7 +207,7 @@ struct SolidKernel {
           Real s = 0.0;
           for (int j = 0; j < dim; ++j) s += sigma.a[i][j] * k.g[a][j];
           sg[a][i] = dv * s;
-          wg[a][i] = sg[a][i] + mu * k.g[a][i];
+          wg[a][i] = geometric * sg[a][i] + mu * k.g[a][i];
           t[a][i] = k.g[a][i];
           mg[a][i] = mu * k.g[a][i];
         }
@@ -201,7 +221,7 @@ struct SolidKernel {
         for (int i = 0; i < dim; ++i) f[a * dim + i] += sg[a][i];
         if constexpr (axisymmetric) f[a * dim] += dv * sigma.a[2][2] * h[a];
       }
-      const Real hoopCoef = axisymmetric ? (2.0 * mu + dv * sigma.a[2][2]) : 0.0;
+      const Real hoopCoef = axisymmetric ? (2.0 * mu + geometric * dv * sigma.a[2][2]) : 0.0;
 
       // Upper block triangle b >= a; the lower one is mirrored after the loop.
       for (int a = 0; a < numNodes; ++a) {
@@ -233,7 +253,7 @@ struct SolidKernel {
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
       if (!kinematics<false>(q, X, x, k)) return false;
-      W += mat.energy(k.F) * k.dV;
+      W += (mat.kinematics == material::Kinematics::SmallStrain ? mat.linearEnergy(k.F) : mat.energy(k.F)) * k.dV;
     }
     return true;
   }
@@ -246,7 +266,7 @@ struct SolidKernel {
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
       if (!kinematics<false>(q, X, x, k)) return false;
-      const Mat3 s = mat.cauchy(leftCauchyGreen(k.F), k.J);
+      const Mat3 s = stress(mat, k);
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) sigma.a[i][j] += s.a[i][j];
       J += k.J;

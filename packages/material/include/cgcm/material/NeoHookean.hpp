@@ -24,6 +24,12 @@
 //   LogSquared: p = Λ ln J,       J p' = Λ     → λ' = Λ / J,  μ' = (μ − Λ ln J) / J
 //   QuadraticJ: p = (Λ/2)(J²−1),  J p' = Λ J²  → λ' = Λ J,    μ' = (μ − (Λ/2)(J² − 1)) / J
 //
+// Small strain. With kinematics = SmallStrain the same constants describe
+// the model linearised about the reference configuration: linear elasticity,
+// σ = Λ tr(ε) I + 2μ ε with ε = sym(F) − I, equilibrium written on the
+// reference configuration (fem::SolidKernel). Comparing the two isolates
+// what finite strain changes in a result.
+//
 // Evaluation functions take no allocation and are usable inside Kokkos
 // kernels; the factories validate their input on the host and throw
 // cgcm::InputError.
@@ -49,6 +55,12 @@ inline const char* toString(VolumetricLaw law) {
   return law == VolumetricLaw::LogSquared ? "LogSquared" : "QuadraticJ";
 }
 
+/// Finite strain (the Neo-Hookean model) or its small-strain linearisation.
+enum class Kinematics {
+  FiniteStrain,  ///< default
+  SmallStrain    ///< linear elasticity with the same (Λ, μ)
+};
+
 /// Spatial tangent moduli of the Cauchy stress in the isotropic form
 /// c = lambdaEff I⊗I + 2 muEff 𝕀^sym (the Truesdell-rate moduli of the
 /// Kirchhoff stress divided by J).
@@ -61,6 +73,7 @@ struct NeoHookean {
   Real lambda;  ///< first Lamé constant Λ
   Real mu;      ///< shear modulus μ
   VolumetricLaw law;
+  Kinematics kinematics = Kinematics::FiniteStrain;
 
   /// Parameters from Young's modulus Y > 0 and Poisson's ratio −1 < ν < 0.5:
   /// μ = Y / (2(1+ν)), Λ = 2μν / (1 − 2ν).
@@ -97,7 +110,7 @@ struct NeoHookean {
     if (law != VolumetricLaw::LogSquared && law != VolumetricLaw::QuadraticJ) {
       throw InputError("NeoHookean: volumetric law is out of range; allowed: LogSquared, QuadraticJ");
     }
-    return NeoHookean{lambda, mu, law};
+    return NeoHookean{lambda, mu, law, Kinematics::FiniteStrain};
   }
 
   /// Young's modulus Y = μ (3Λ + 2μ) / (Λ + μ).
@@ -150,6 +163,31 @@ struct NeoHookean {
     const Real diag = (p - mu) * invJ;
     for (int i = 0; i < 3; ++i) s.a[i][i] += diag;
     return s;
+  }
+
+  /// Small-strain stress σ = Λ tr(ε) I + 2μ ε, ε = sym(F) − I: the
+  /// linearisation of cauchy() about F = I.
+  KOKKOS_INLINE_FUNCTION Mat3 linearStress(const Mat3& F) const {
+    Real trEps = 0.0;
+    for (int i = 0; i < 3; ++i) trEps += F.a[i][i] - 1.0;
+    Mat3 s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) s.a[i][j] = mu * (F.a[i][j] + F.a[j][i]);
+    for (int i = 0; i < 3; ++i) s.a[i][i] += lambda * trEps - 2.0 * mu;
+    return s;
+  }
+
+  /// Small-strain energy per volume W = Λ/2 (tr ε)² + μ ε:ε; linearStress() is its derivative.
+  KOKKOS_INLINE_FUNCTION Real linearEnergy(const Mat3& F) const {
+    Real trEps = 0.0, epsEps = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      trEps += F.a[i][i] - 1.0;
+      for (int j = 0; j < 3; ++j) {
+        const Real e = 0.5 * (F.a[i][j] + F.a[j][i]) - (i == j ? 1.0 : 0.0);
+        epsEps += e * e;
+      }
+    }
+    return 0.5 * lambda * trEps * trEps + mu * epsEps;
   }
 
   /// Spatial moduli c of the Cauchy stress at J = det F > 0 (see the header comment).
