@@ -20,9 +20,7 @@ The table holds, per model and lambda, both pull-off rows of `pulloff`.
 """
 import argparse
 import csv
-import io
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -30,20 +28,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from analytic_csv import columns as analytic_columns  # noqa: E402
 
 BASE = [("hertz", "Hertz", "k", "-"), ("jkr", "JKR", "C3", "-"), ("dmt", "DMT", "C0", "--")]
 
 
-def run(exe, *args):
-    """CSV of `cgcm-analytic args` as {column: array}; its stderr notes are passed on."""
-    p = subprocess.run([exe, *args], capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit(f"{exe} {' '.join(args)} failed ({p.returncode}):\n{p.stderr.strip()}")
-    for line in p.stderr.strip().splitlines():
-        print(f"  note: {line}", file=sys.stderr)
-    rows = list(csv.DictReader(io.StringIO(p.stdout)))
-    return {k: np.array([float(r[k]) for r in rows]) if k != "control" else [r[k] for r in rows]
-            for k in rows[0]}
+def columns(exe, *args):
+    """cgcm-analytic's CSV by column, its notes passed on."""
+    return analytic_columns(exe, *args, notes=True)
 
 
 def models(lambdas):
@@ -67,9 +59,9 @@ def save(fig, path):
 def fig7(exe, lambdas, a, points, path):
     a_arg = ["--a", f"{a:g}"]
     # first pass: the tool's default extent for M-D is 1.25 m, so its adhesive zone shows
-    rmax = max(run(exe, "pressure", "--model", "md", "--lambda", f"{lam:g}", *a_arg, "--points", "3")["r_over_a"][-1]
+    rmax = max(columns(exe, "pressure", "--model", "md", "--lambda", f"{lam:g}", *a_arg, "--points", "3")["r_over_a"][-1]
                for lam in lambdas)
-    curves = [(lab, col, ls, run(exe, "pressure", *m, *a_arg, "--rmax", f"{rmax:g}", "--points", str(points)))
+    curves = [(lab, col, ls, columns(exe, "pressure", *m, *a_arg, "--rmax", f"{rmax:g}", "--points", str(points)))
               for m, lab, col, ls in models(lambdas)]
     finite = np.concatenate([c["p"][np.isfinite(c["p"])] for lab, _, _, c in curves if lab != "JKR"])
     lo, hi = 1.12 * finite.min(), 1.25 * finite.max()
@@ -98,7 +90,7 @@ def pulloffs(exe, lambdas):
     rows = []
     for m, lab, col, ls in models(lambdas):
         print(f"pulloff {' '.join(m)}", file=sys.stderr)
-        t = run(exe, "pulloff", *m)
+        t = columns(exe, "pulloff", *m)
         rows.append((m, lab, col, {ctl: [t[k][i] for k in ("P", "a", "delta")]
                                    for i, ctl in enumerate(t["control"])}))
     return rows
@@ -109,7 +101,7 @@ def fig8(exe, lambdas, points, po, path):
     ax.axhline(0.0, color="k", lw=0.5)
     ax.axvline(0.0, color="k", lw=0.5)
     for (m, lab, col, ls), (_, _, _, pts) in zip(models(lambdas), po):
-        c = run(exe, "curve", *m, "--a-min", "1e-4", "--points", str(points))
+        c = columns(exe, "curve", *m, "--a-min", "1e-4", "--points", str(points))
         ax.plot(c["delta"], c["P"], ls, color=col, lw=1.8 if lab == "Hertz" else 1.2, label=lab,
                 zorder=2.5 if lab == "JKR" else 2)
         if m[1] == "hertz":  # no adhesion, no pull-off (both rows P = 0 at a = 0)

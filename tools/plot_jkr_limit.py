@@ -9,18 +9,13 @@ the Maugis-Dugdale model (lambda = 1.16 mu), between Bradley's -2 and JKR's
 """
 import argparse
 import csv
-import subprocess
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-
-
-def analytic(exe, *args):
-    out = subprocess.run([exe, *args], check=True, capture_output=True, text=True).stdout
-    return out.strip().splitlines()
+from analytic_csv import rows  # noqa: E402
 
 
 def main():
@@ -31,12 +26,12 @@ def main():
     args = ap.parse_args()
 
     mus = np.geomspace(0.05, 10.0, 14)
-    lj = [float(analytic(args.analytic, "ljsphere", "--mu", f"{m:g}", "--pulloff")[-1].split(",")[1]) for m in mus]
+    lj = [float(rows(args.analytic, "ljsphere", "--mu", f"{m:g}", "--pulloff")[-1]["P_min"]) for m in mus]
     md_mu = np.geomspace(0.05, 10.0, 60)
     md = []
     for m in md_mu:
-        rows = analytic(args.analytic, "pulloff", "--model", "md", "--lambda", f"{1.16 * m:g}")
-        md.append(next(float(r.split(",")[1]) for r in rows if r.startswith("load,")))
+        points = rows(args.analytic, "pulloff", "--model", "md", "--lambda", f"{1.16 * m:g}")
+        md.append(next(float(r["P"]) for r in points if r["control"] == "load"))
 
     with open(args.table, newline="") as f:
         runs = [r for r in csv.DictReader(f) if r["P_min_over_piwR"] not in ("", "nan")]

@@ -11,8 +11,6 @@ states of the other figures are marked (--mark U, approach).
 """
 import argparse
 import csv
-import io
-import subprocess
 import sys
 
 import matplotlib
@@ -20,13 +18,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from analytic_csv import columns  # noqa: E402
 from plot_load_curves import draw  # noqa: E402
-
-
-def run(cmd):
-    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    rows = list(csv.DictReader(io.StringIO(out)))
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
 def main():
@@ -40,13 +33,13 @@ def main():
     ap.add_argument("--analytic", default="build/bin/cgcm-analytic")
     ap.add_argument("--output", default="md-comparison.png")
     a = ap.parse_args()
-    m = run([a.analytic, "map", "--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu])
+    m = columns(a.analytic, "map", "--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu)
     if a.lam:
         lams = [("", float(a.lam))]
     else:
-        fit = run([a.analytic, "fit", "--curve", a.curve, "--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu])
+        fit = columns(a.analytic, "fit", "--curve", a.curve, "--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu)
         lams = [("theoretical ", m["lambda_theory"][0]), ("best fit ", fit["lambda"][0])]
-    jkr = run([a.analytic, "curve", "--model", "jkr"])
+    jkr = columns(a.analytic, "curve", "--model", "jkr")
     fF, fd = m["f_F"][0], m["f_delta"][0]
     with open(a.curve, newline="") as f:
         rows = list(csv.DictReader(f))
@@ -55,7 +48,7 @@ def main():
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     draw(ax, c, P, lw=1.6, label="CGCM (Method 3, large deformation; dashed: unstable)")
     for (name, lam), style in zip(lams, ("--", "-.")):
-        md = run([a.analytic, "curve", "--model", "md", "--lambda", repr(lam)])
+        md = columns(a.analytic, "curve", "--model", "md", "--lambda", repr(lam))
         ax.plot([fd * d for d in md["delta"]], [fF * p for p in md["P"]], style, lw=1.2,
                 label=f"Maugis-Dugdale, {name}lambda = {lam:.3g}")
     end = max(range(len(u)), key=lambda k: u[k])  # the approach ends at the largest u

@@ -26,9 +26,7 @@ the state's u on the displacement-control branch.
 """
 import argparse
 import csv
-import io
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -38,13 +36,8 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+from analytic_csv import columns  # noqa: E402
 from plot_field import deformed_cells, deformed_xy, names  # noqa: E402
-
-
-def analytic(exe, *args):
-    out = subprocess.run([exe, *map(str, args)], check=True, capture_output=True, text=True).stdout
-    rows = list(csv.DictReader(io.StringIO(out)))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
 class Results:
@@ -83,7 +76,7 @@ def approach_steps(res):
 def md_radius_at(exe, lam, u, common):
     """M-D contact radius (CGCM units) whose approach is u on the
     displacement-control branch (a beyond the minimum of u(a))."""
-    c = analytic(exe, "curve", "--model", "md", "--lambda", lam, "--a-max", 4, "--points", 2000, *common)
+    c = columns(exe, "curve", "--model", "md", "--lambda", lam, "--a-max", 4, "--points", 2000, *common)
     i0 = int(np.argmin(c["u_cgcm"]))  # u rises with a beyond here
     uc = c["u_cgcm"][i0:]
     if not (uc[0] <= u <= uc[-1]):
@@ -133,9 +126,9 @@ def main():
     exe = a.analytic
     common = ["--gammaL", a.gammaL, "--gammaW", a.gammaW, "--nu", a.nu]
     res = Results(os.path.join(a.run, "results.e"))
-    m = analytic(exe, "map", *common)
+    m = columns(exe, "map", *common)
     lam_theory = float(m["lambda_theory"][0])
-    fit = analytic(exe, "fit", "--curve", os.path.join(a.run, "load_curve.csv"), *common)
+    fit = columns(exe, "fit", "--curve", os.path.join(a.run, "load_curve.csv"), *common)
     lam_fit = float(fit["lambda"][0])
 
     steps = approach_steps(res)
@@ -159,7 +152,7 @@ def main():
             a_md, P_md, a_tool = md[name]
             if not np.isfinite(a_md):
                 continue
-            q = analytic(exe, "pressure", "--model", "md", "--lambda", lam, "--a", a_tool, "--rmax", 2.0, "--points", 801,
+            q = columns(exe, "pressure", "--model", "md", "--lambda", lam, "--a", a_tool, "--rmax", 2.0, "--points", 801,
                          *common)
             ax.plot(q["r_cgcm"], q["p_cgcm"], style, lw=1.3,
                     label=f"M-D, {name} lambda = {lam:.3g}: a = {a_md:.3f}, P = {P_md:.3g}")
@@ -182,7 +175,7 @@ def main():
         a_md, _, a_tool = md[which]
         extent = 2.0 * max(a_cgcm, a_md if np.isfinite(a_md) else 0.0, 0.05)
         nr = nz = 121
-        s = analytic(exe, "stress", "--model", "md", "--lambda", lam_s, "--a", a_tool, "--grid", f"{nr},{nz}",
+        s = columns(exe, "stress", "--model", "md", "--lambda", lam_s, "--a", a_tool, "--grid", f"{nr},{nz}",
                      "--rmax", extent / a_md, "--zmax", extent / a_md, *common)
         # one scale for both: the M-D extremes and the CGCM cells' 0.5/99.5 percentiles
         fe = res.cells("stress_zz", step)[1]
