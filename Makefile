@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study stability-map sphere-3d method-study sanitize fuzz
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study pulloff-map stability-map sphere-3d method-study sanitize fuzz
 
 deps:
 	@bash scripts/install-deps.sh
@@ -68,6 +68,16 @@ paper: build
 # gammaL, against the Lennard-Jones sphere reference (output/validation/jkr-study).
 jkr-study: build
 	@bash tools/run_jkr_study.sh $(BUILD_DIR)
+
+# Pull-off force over Tabor mu 0.05 .. 5 at gammaL = 50 and 200, finite and
+# small strain on the same meshes (tools/pulloff_map.py): output/pulloff-map,
+# and the plot into doc/figures. Finished runs are reused; PULLOFF_MAX_LEVEL=3
+# resolves the mu = 5 cohesive zone (cells of half its length, hours).
+PULLOFF_MAX_LEVEL ?= 2
+pulloff-map: build
+	/usr/bin/python3 tools/pulloff_map.py --build $(BUILD_DIR) --output output/pulloff-map --jobs $(JOBS) \
+	  --max-level $(PULLOFF_MAX_LEVEL)
+	cp output/pulloff-map/pulloff_map.png doc/figures/pulloff-map.png
 
 # The critical gammaW of the jump-to-contact for gammaL = 10 .. 200 (arc-length
 # approaches, bisection with the fold detector): output/stability-map, and

@@ -9,8 +9,9 @@
 #   12, 13                M-D comparisons (tools/plot_paper_states.py)
 #   demo, soft JKR        the default deck; the soft sphere on mesh levels 0 and 1
 #   JKR limit, stability  the long studies (make jkr-study, stability-map,
-#   map, Method 1 vs 3,   method-study, mesh-convergence): run if their tables
-#   mesh convergence      are missing under output/, otherwise plotted from them
+#   map, pull-off map,    pulloff-map, method-study, mesh-convergence): run if
+#   Method 1 vs 3, mesh   their tables are missing under output/, otherwise
+#   convergence           plotted from them
 #
 # The plain (unbarred) gammaL, gammaW of the paper decks: literal reading of
 # gammaL bar = 50 and gammaW bar = 200, 20 (doc/theory.md).
@@ -77,6 +78,12 @@ if [ -s output/stability-map/stability_boundary.csv ] && [ -s output/stability-m
   cp output/stability-map/stability_map.png doc/figures/stability-map.png
 else
   make --no-print-directory stability-map BUILD_DIR="$build" || status=1
+fi
+if [ -s output/pulloff-map/table.csv ]; then
+  $py tools/pulloff_map.py --build "$build" --output output/pulloff-map --plot-only || status=1
+  cp output/pulloff-map/pulloff_map.png doc/figures/pulloff-map.png
+else
+  make --no-print-directory pulloff-map BUILD_DIR="$build" || status=1
 fi
 if [ ! -s output/validation/mesh-convergence/orders.csv ]; then
   make --no-print-directory mesh-convergence BUILD_DIR="$build" || status=1

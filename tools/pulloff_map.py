@@ -1,0 +1,235 @@
+#!/usr/bin/env python3
+"""Pull-off force of the sphere on the half-space over the Tabor parameter:
+for each gammaL and Tabor mu the CGCM approaches into contact and retracts
+past the minimum force, once at finite strain (Neo-Hookean) and once with
+Material/Kinematics = small strain on the same mesh and path. The minimum
+force |P_min|/(pi w R) is compared with the Lennard-Jones sphere (small
+strain, Derjaguin; cgcm-analytic ljsphere) and Maugis-Dugdale (lambda =
+1.157 mu); the finite/small pair isolates what finite strain changes.
+
+Each case is planned from the Maugis-Dugdale curve at the theoretical
+lambda (cgcm-analytic map, curve, pulloff): the approach ends at the zero-load
+contact, the retraction halfway between the load- and the
+displacement-control pull-off; the finest cells (Contact Zone Size / 20 /
+2^level) are at most 0.4 of the cohesive length E* r_S0^2 / w and r0, over
+1.3 zero-load contact radii. P_min is the vertex of the parabola through the
+lowest state and its neighbours.
+
+Writes table.csv and pulloff_map.png into --output.
+
+    pulloff_map.py --build build --output output/pulloff-map [--gammaL 50 200]
+                   [--mu 0.05 0.1 ...] [--jobs 2] [--plan]
+"""
+import argparse
+import concurrent.futures
+import csv
+import math
+import os
+import subprocess
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from analytic_csv import rows  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+NU = 0.2
+LAMBDA_OVER_MU = 1.15701  # the 9-3 half-space law (doc/analytic-models.md)
+
+
+def analytic(build, *args):
+    return rows(os.path.join(build, "bin", "cgcm-analytic"), *args)
+
+
+def gamma_w_for(gl, mu):
+    """gammaW giving Tabor mu at gammaL (mu is proportional to (gammaL/gammaW^2)^(1/3))."""
+    mu1 = float(analytic(BUILD, "map", "--gammaL", f"{gl:g}", "--gammaW", "1", "--nu", f"{NU}")[0]["mu_tabor"])
+    return (mu1 / mu) ** 1.5
+
+
+def plan(gl, mu, max_level):
+    """Deck overrides and scales of one case."""
+    gw = gamma_w_for(gl, mu)
+    m = {k: float(v) for k, v in analytic(BUILD, "map", "--gammaL", f"{gl:.12g}", "--gammaW", f"{gw:.12g}",
+                                          "--nu", f"{NU}")[0].items()}
+    lam = m["lambda_theory"]
+    pull = {r["control"]: r for r in analytic(BUILD, "pulloff", "--model", "md", "--lambda", f"{lam:.8g}")}
+    curve = analytic(BUILD, "curve", "--model", "md", "--lambda", f"{lam:.8g}", "--a-max", "4", "--points", "800")
+    zero = next(r for r in curve if float(r["P"]) >= 0.0)  # the zero-load state of the loading branch
+    r0 = 1.0 / gl
+    rs0 = r0 / 15 ** (1 / 6)
+    f_d, f_a = m["f_delta"], m["f_a"]
+    d_load, d_disp = float(pull["load"]["delta"]), float(pull["displacement"]["delta"])
+    u_in = max(f_d * float(zero["delta"]), 0.0) + 0.5 * rs0
+    u_end = f_d * 0.5 * (d_load + d_disp) - rs0
+    u_start = f_d * d_disp - 3.0 * rs0
+    a0 = f_a * float(zero["a"])
+    ell = m["f_E"] * rs0 ** 2 / m["w"]  # E* = f_E Y of the two bodies together
+    cell_max = min(0.4 * ell, r0)
+    zone = min(1.0, max(1.3 * a0, 10 * r0))
+    level = min(max_level, max(0, math.ceil(math.log2(zone / 20 / cell_max))))
+    step = (u_in - u_end) / 60
+    overrides = [
+        f"Interaction/gammaL={gl:.12g}", f"Interaction/gammaW={gw:.12g}",
+        f"Geometry/Mesh Refinement={level}", f"Geometry/Contact Zone Size={zone:.4g}",
+        f"Loading/Approach Path={{{u_start:.6g},{u_in:.6g},{u_end:.6g}}}",
+        f"Loading/Initial Increment={step:.6g}", f"Loading/Max Increment={step:.6g}",
+        f"Loading/Min Increment={step * 1e-5:.6g}", "Output/Print Steps=false", "Output/Exodus=false",
+        "Output/Checkpoint=false"]
+    return {"gammaL": gl, "gammaW": gw, "mu": m["mu_tabor"], "lambda": lam, "w": m["w"], "level": level,
+            "zone": zone, "cell_over_ell": zone / 20 / 2 ** level / ell, "overrides": overrides}
+
+
+def minimum_force(csv_path):
+    """Vertex of the parabola through the lowest stable state and its neighbours, and whether
+    the minimum lies inside the path (not at its last state)."""
+    with open(csv_path, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r["stable"] == "1"]
+    u = [float(r["u"]) for r in rows]
+    p = [float(r["P"]) for r in rows]
+    k = min(range(len(p)), key=p.__getitem__)
+    inside = 0 < k < len(p) - 1
+    if not inside:
+        return p[k], u[k], False
+    (u0, u1, u2), (p0, p1, p2) = u[k - 1:k + 2], p[k - 1:k + 2]
+    denom = (u0 - u1) * (u0 - u2) * (u1 - u2)
+    a = (u2 * (p1 - p0) + u1 * (p0 - p2) + u0 * (p2 - p1)) / denom
+    b = (u2 * u2 * (p0 - p1) + u1 * u1 * (p2 - p0) + u0 * u0 * (p1 - p2)) / denom
+    if a <= 0.0 or not min(u0, u2) <= -b / (2 * a) <= max(u0, u2):  # a kink (a snapping ring): keep the state
+        return p1, u1, True
+    uv = -b / (2 * a)
+    return p1 - a * (uv - u1) ** 2, uv, True
+
+
+def run_case(case, kinematics, out, rerun):
+    """One cgcm run; a finished run of the same command in `out` is reused unless rerun."""
+    name = f"gL{case['gammaL']:g}-mu{case['mu']:.3g}-{kinematics.split()[0]}"
+    folder = os.path.join(out, name)
+    args = [os.path.join(BUILD, "bin", "cgcm"), os.path.join(ROOT, "inputs", "sphere-on-half-space.xml"),
+            f"Output/Directory={folder}", f"Material/Kinematics={kinematics}", *case["overrides"]]
+    log = os.path.join(out, name + ".log")
+    command = " ".join(args)
+    cached = None
+    if not rerun and os.path.exists(log):
+        with open(log) as f:
+            text = f.read()
+        if text.startswith(command + "\n") and "\nexit " in text:
+            cached = text
+    if cached is None:
+        t0 = time.time()
+        proc = subprocess.run(args, capture_output=True, text=True)
+        cached = f"{command}\n{proc.stdout}{proc.stderr}\nexit {proc.returncode} after {time.time() - t0:.1f} s\n"
+        with open(log, "w") as f:
+            f.write(cached)
+    code, seconds = cached.rsplit("\nexit ", 1)[1].split(" after ")
+    result = {"status": "completed" if code == "0" else f"exit {code}", "seconds": float(seconds.split()[0])}
+    result["unknowns"] = ""
+    summary = os.path.join(folder, "summary.txt")
+    if os.path.exists(summary):
+        with open(summary) as f:
+            rows = [ln for ln in f if ln.startswith("Jacobian at the end: ")]
+        result["unknowns"] = rows[0].split()[4] if rows else ""
+    curve = os.path.join(folder, "load_curve.csv")
+    if os.path.exists(curve):
+        pmin, umin, inside = minimum_force(curve)
+        result.update(P_min=pmin, u_min=umin, inside=inside)
+    return name, result
+
+
+def main():
+    global BUILD
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--output", default="output/pulloff-map")
+    ap.add_argument("--gammaL", type=float, nargs="+", default=[50.0, 200.0])
+    ap.add_argument("--mu", type=float, nargs="+", default=[0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0])
+    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
+    ap.add_argument("--max-level", type=int, default=2,
+                    help="cap of the mesh level (the table gives the cells' size over the cohesive length)")
+    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
+    ap.add_argument("--plan", action="store_true", help="print the cases and their meshes, run nothing")
+    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
+    args = ap.parse_args()
+    BUILD = args.build
+    os.makedirs(args.output, exist_ok=True)
+    table = os.path.join(args.output, "table.csv")
+
+    if not args.plot_only:
+        cases = [plan(gl, mu, args.max_level) for gl in args.gammaL for mu in args.mu]
+        for c in cases:
+            print(f"gammaL {c['gammaL']:g}, mu {c['mu']:.3g}: gammaW {c['gammaW']:.4g}, lambda {c['lambda']:.3g}, "
+                  f"level {c['level']}, zone {c['zone']:.3g} (cells {c['cell_over_ell']:.2f} of the cohesive length), "
+                  f"path {c['overrides'][4].split('=')[1]}", flush=True)
+        if args.plan:
+            return
+        # the cheap (coarse) cases first
+        jobs = [(c, k) for c in sorted(cases, key=lambda c: c["level"]) for k in ("finite strain", "small strain")]
+        results = {}
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            for name, r in pool.map(lambda job: run_case(job[0], job[1], args.output, args.rerun), jobs):
+                results[name] = r
+                print(f"{name}: {r['status']}, {r['seconds']:.0f} s, P_min {r.get('P_min', float('nan')):.6g}"
+                      f"{'' if r.get('inside', True) else ' (at the end of the path)'}", flush=True)
+        with open(table, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["gammaL", "gammaW", "mu", "lambda", "level", "zone", "cell_over_ell", "unknowns",
+                        "finite_P_over_piwR", "small_P_over_piwR", "finite_vs_small_percent", "lj_sphere",
+                        "maugis_dugdale", "finite_u_min", "small_u_min", "finite_seconds", "small_seconds", "status"])
+            for c in cases:
+                rf = results[f"gL{c['gammaL']:g}-mu{c['mu']:.3g}-finite"]
+                rs = results[f"gL{c['gammaL']:g}-mu{c['mu']:.3g}-small"]
+                scale = math.pi * c["w"]
+                pf = rf.get("P_min", float("nan")) / scale
+                ps = rs.get("P_min", float("nan")) / scale
+                lj = float(analytic(BUILD, "ljsphere", "--mu", f"{c['mu']:.8g}", "--pulloff")[-1]["P_min"])
+                md = float(next(r for r in analytic(BUILD, "pulloff", "--model", "md", "--lambda",
+                                                    f"{c['lambda']:.8g}") if r["control"] == "load")["P"])
+                status = ";".join(f"{k}: {r['status']}" + ("" if r.get("inside", False) else " (minimum not inside)")
+                                  for k, r in (("finite", rf), ("small", rs))
+                                  if r["status"] != "completed" or not r.get("inside", False)) or "ok"
+                w.writerow([f"{c['gammaL']:g}", f"{c['gammaW']:.6g}", f"{c['mu']:.4g}", f"{c['lambda']:.4g}",
+                            c["level"], f"{c['zone']:.4g}", f"{c['cell_over_ell']:.3f}", rf.get("unknowns", ""),
+                            f"{pf:.5f}", f"{ps:.5f}", f"{100 * (pf / ps - 1):.2f}", f"{lj:.5f}", f"{md:.5f}",
+                            f"{rf.get('u_min', float('nan')):.6g}", f"{rs.get('u_min', float('nan')):.6g}",
+                            f"{rf['seconds']:.0f}", f"{rs['seconds']:.0f}", status])
+        print(f"wrote {table}")
+    plot(table, os.path.join(args.output, "pulloff_map.png"))
+
+
+def plot(table, png):
+    with open(table, newline="") as f:
+        rows = list(csv.DictReader(f))
+    mus = [10 ** (math.log10(0.04) + i * (math.log10(6.0) - math.log10(0.04)) / 24) for i in range(25)]
+    lj = [-float(analytic(BUILD, "ljsphere", "--mu", f"{m:.6g}", "--pulloff")[-1]["P_min"]) for m in mus]
+    md = [-float(next(r for r in analytic(BUILD, "pulloff", "--model", "md", "--lambda", f"{LAMBDA_OVER_MU * m:.6g}")
+                      if r["control"] == "load")["P"]) for m in mus]
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for y, label in ((2.0, "Bradley / DMT  2"), (1.5, "JKR  1.5")):
+        ax.axhline(y, color="0.6", lw=0.8, ls=":")
+        ax.text(0.042, y + 0.005, label, va="bottom", fontsize=8, color="0.4")
+    ax.plot(mus, lj, "k-", lw=1.4, label="Lennard-Jones sphere (Derjaguin, small strain)")
+    ax.plot(mus, md, "k--", lw=1.0, label="Maugis–Dugdale, λ = 1.157 μ")
+    gls = sorted({r["gammaL"] for r in rows}, key=float)
+    for i, gl in enumerate(gls):
+        sel = [r for r in rows if r["gammaL"] == gl]
+        x = [float(r["mu"]) for r in sel]
+        ax.plot(x, [-float(r["finite_P_over_piwR"]) for r in sel], "o-", color=f"C{i}", ms=6, lw=0.8,
+                label=f"CGCM γL = {gl}, finite strain")
+        ax.plot(x, [-float(r["small_P_over_piwR"]) for r in sel], "s:", color=f"C{i}", mfc="none", ms=6, lw=0.8,
+                label=f"CGCM γL = {gl}, small strain")
+    ax.set_xscale("log")
+    ax.set_xlabel("Tabor parameter μ")
+    ax.set_ylabel("pull-off force  |P_min| / (π w R)")
+    ax.legend(fontsize=7.5, loc="upper right")
+    ax.grid(True, which="both", lw=0.3, alpha=0.5)
+    fig.tight_layout()
+    fig.savefig(png, dpi=130)
+    print(f"wrote {png}")
+
+
+BUILD = "build"
+
+if __name__ == "__main__":
+    main()
