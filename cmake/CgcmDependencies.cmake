@@ -33,3 +33,7 @@ find_library(GMSH_LIBRARY gmsh)
 find_path(EXODUS_INCLUDE_DIR exodusII.h)
 find_library(EXODUS_LIBRARY exoIIv2c)
 find_library(NETCDF_LIBRARY netcdf)
+# MUMPS (libmumps-dev, double precision, MPI): the "MUMPS" linear solver.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_library(DMUMPS_LIBRARY dmumps REQUIRED)
+find_library(MUMPS_COMMON_LIBRARY mumps_common REQUIRED)

@@ -2,7 +2,8 @@
 // element variables by name), or prints what one holds. Debian has no SEACAS
 // exodiff; this covers what cgcm's tests need.
 //
-//   exo_compare [--abs A] [--rel R] a.e b.e   exit 0 if |a-b| <= A + R max(|a|,|b|) everywhere, 1 if not
+//   exo_compare [--abs A] [--rel R] [--abs-for NAME=A ...] a.e b.e
+//       exit 0 if |a-b| <= A + R max(|a|,|b|) everywhere (variable NAME: its own A), 1 if not
 //   exo_compare --dump file.e                 blocks, sets, variable names, steps and the globals per step
 //
 // Exit code 2: bad usage or an unreadable file.
@@ -17,7 +18,7 @@
 namespace {
 
 int usage() {
-  std::cerr << "usage: exo_compare [--abs A] [--rel R] a.e b.e   (defaults: A = 1e-12, R = 1e-9)\n"
+  std::cerr << "usage: exo_compare [--abs A] [--rel R] [--abs-for NAME=A ...] a.e b.e   (defaults: A = 1e-12, R = 1e-9)\n"
                "       exo_compare --dump file.e\n";
   return 2;
 }
@@ -77,6 +78,12 @@ int main(int argc, char** argv) {
       const std::string arg = argv[i];
       if ((arg == "--abs" || arg == "--rel") && i + 1 < argc) {
         if (!number(argv[++i], arg == "--abs" ? tol.abs : tol.rel)) return usage();
+      } else if (arg == "--abs-for" && i + 1 < argc) {
+        const std::string spec = argv[++i];
+        const auto eq = spec.rfind('=');
+        double a = 0.0;
+        if (eq == std::string::npos || eq == 0 || !number(spec.c_str() + eq + 1, a)) return usage();
+        tol.absFor[spec.substr(0, eq)] = a;
       } else if (!arg.empty() && arg[0] == '-') {
         return usage();
       } else {

@@ -189,12 +189,13 @@ std::vector<std::string> compareExodus(const std::string& pathA, const std::stri
     for (const auto& name : globals) {
       const auto ia = std::find(a.globalNames().begin(), a.globalNames().end(), name) - a.globalNames().begin();
       const auto ib = std::find(b.globalNames().begin(), b.globalNames().end(), name) - b.globalNames().begin();
-      compareValues("global \"" + name + "\"" + at, {ga[ia]}, {gb[ib]}, tol, out);
+      compareValues("global \"" + name + "\"" + at, {ga[ia]}, {gb[ib]}, tol.of(name), out);
     }
     for (const auto& name : nodals)
-      compareValues("nodal \"" + name + "\"" + at, a.nodal(name, step), b.nodal(name, step), tol, out);
+      compareValues("nodal \"" + name + "\"" + at, a.nodal(name, step), b.nodal(name, step), tol.of(name), out);
     for (const auto& name : elements)
-      compareValues("element \"" + name + "\"" + at, a.element(name, step), b.element(name, step), tol, out);
+      compareValues("element \"" + name + "\"" + at, a.element(name, step), b.element(name, step), tol.of(name),
+                    out);
   }
   return out;
 }

@@ -499,6 +499,67 @@ TEST(ModelEvaluator, ParameterDerivativeMatchesFiniteDifferences) {
 namespace cgcm {
 namespace {
 
+// An unsymmetric tridiagonal matrix (a convection-diffusion stencil) on every
+// rank's rows, with values scaled by `scale` and, if `widen`, one more
+// coupling per row (a new sparsity pattern).
+RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double scale, bool widen) {
+  auto A = Teuchos::rcp(new assembly::CrsMatrix(map, 4));
+  const GlobalIndex n = GlobalIndex(map->getGlobalNumElements());
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GlobalIndex i = map->getGlobalElement(LocalIndex(k));
+    std::vector<GlobalIndex> cols{i};
+    std::vector<double> vals{4.0 * scale};
+    if (i > 0) cols.push_back(i - 1), vals.push_back(-1.5 * scale);
+    if (i + 1 < n) cols.push_back(i + 1), vals.push_back(-0.5 * scale);
+    if (widen && i + 7 < n) cols.push_back(i + 7), vals.push_back(0.25 * scale);
+    A->insertGlobalValues(i, Teuchos::ArrayView<const GlobalIndex>(cols), Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+// MUMPS solves to round-off on any number of ranks, with several right-hand
+// sides, after new values on the same pattern and after a new pattern; a
+// singular matrix is an error that says so.
+TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = Teuchos::rcp(new assembly::Map(Tpetra::global_size_t(101), 0, comm));
+  ParameterList settings("Linear Solver");
+  settings.set("Type", "MUMPS");
+  settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
+  const auto factory = solver::buildLinearSolver(settings, comm->getSize(), 1);
+  const auto lows = factory->createOp();
+  for (const auto& [scale, widen] : {std::pair{1.0, false}, std::pair{3.0, false}, std::pair{1.0, true}}) {
+    SCOPED_TRACE("scale " + std::to_string(scale) + (widen ? ", widened pattern" : ""));
+    const auto A = stencil(map, scale, widen);
+    const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(A));
+    Thyra::initializeOp(*factory, op, lows.ptr());
+    assembly::MultiVector exact(map, 2), b(map, 2), x(map, 2);
+    exact.randomize();
+    A->apply(exact, b);
+    Thyra::solve(*lows, Thyra::NOTRANS, *Thyra::createConstMultiVector(Teuchos::rcp_implicit_cast<const assembly::MultiVector>(Teuchos::rcpFromRef(b))),
+                 Thyra::createMultiVector(Teuchos::rcpFromRef(x)).ptr());
+    x.update(-1.0, exact, 1.0);
+    std::vector<double> err(2), size(2);
+    x.normInf(err);
+    exact.normInf(size);
+    for (int k = 0; k < 2; ++k) EXPECT_LT(err[k], 1e-13 * size[k]) << "right-hand side " << k;
+  }
+
+  // the stencil with an empty last row is singular
+  auto singular = Teuchos::rcp(new assembly::CrsMatrix(map, 3));
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GlobalIndex i = map->getGlobalElement(LocalIndex(k));
+    const double d = i == 100 ? 0.0 : 1.0;
+    singular->insertGlobalValues(i, Teuchos::tuple<GlobalIndex>(i), Teuchos::tuple<double>(d));
+  }
+  singular->fillComplete();
+  const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(singular));
+  const auto fresh = factory->createOp();
+  expectThrowMatching<std::runtime_error>([&] { Thyra::initializeOp(*factory, op, fresh.ptr()); },
+                                          "MUMPS factorisation failed .*singular");
+}
+
 TEST(LinearSolver, VerbatimStratimikosListIsUsedAndValidated) {
   // Type = Stratimikos hands the sublist to Stratimikos as is: a Belos GMRES
   // with an Ifpack2 ILUT preconditioner must solve the clamped block like the default.

@@ -1,6 +1,7 @@
 #pragma once
 // Reading Exodus II results back: what tests and tools/exo_compare need
 // (Debian has no SEACAS exodiff). Variables are looked up by name.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,13 @@ class ExodusReader {
 struct ExodusTolerance {
   double abs = 1e-12;
   double rel = 1e-9;
+  std::map<std::string, double> absFor;  ///< a variable's own absolute tolerance, in place of abs
+  /// The tolerance of variable `name`.
+  ExodusTolerance of(const std::string& name) const {
+    ExodusTolerance t{abs, rel, {}};
+    if (const auto it = absFor.find(name); it != absFor.end()) t.abs = it->second;
+    return t;
+  }
 };
 
 /// Compares two Exodus files: dimension, number of nodes and elements, number

@@ -2,7 +2,9 @@
 // Linear solvers through Stratimikos, with Ifpack2 and MueLu registered.
 //
 // Deck sublist "Linear Solver":
-//   Type = "auto" (default): Amesos2 KLU2 on one rank, Belos GMRES + Ifpack2 on more;
+//   Type = "auto" (default): in 2D MUMPS on one rank, Belos GMRES + Ifpack2 on more; in 3D
+//          Belos GMRES + MueLu;
+//          "MUMPS": direct, any number of ranks (MumpsSolver.hpp);
 //          "Amesos2 KLU2": direct, one rank only (Debian's KLU2 is wrong on several ranks);
 //          "Belos GMRES + Ifpack2", "Belos GMRES + MueLu": iterative;
 //          "Stratimikos": the sublist "Stratimikos" is handed to Stratimikos unchanged.

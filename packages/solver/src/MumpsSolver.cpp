@@ -1,0 +1,244 @@
+#include "MumpsSolver.hpp"
+
+#include <dmumps_c.h>
+#include <mpi.h>
+
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+#include "cgcm/assembly/TpetraTypes.hpp"
+
+namespace cgcm::solver {
+
+namespace {
+
+using assembly::CrsMatrix;
+using assembly::Import;
+using assembly::Map;
+using assembly::MultiVector;
+using Converter = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
+
+// MUMPS' 1-based ICNTL / INFOG (the manual's numbering).
+int& icntl(DMUMPS_STRUC_C& id, int i) { return id.icntl[i - 1]; }
+int infog(const DMUMPS_STRUC_C& id, int i) { return id.infog[i - 1]; }
+
+// What a failed MUMPS phase means, in words where the code is common.
+std::string failure(const char* phase, const DMUMPS_STRUC_C& id) {
+  std::ostringstream os;
+  os << "MUMPS " << phase << " failed (INFOG(1) = " << infog(id, 1) << ", INFOG(2) = " << infog(id, 2) << ")";
+  if (infog(id, 1) == -10) os << ": the matrix is numerically singular";
+  if (infog(id, 1) == -9 || infog(id, 1) == -8 || infog(id, 1) == -13) os << ": out of memory";
+  return os.str();
+}
+
+/// One factorised matrix: the MUMPS instance, the coordinates it was given and
+/// the maps that gather right-hand sides on rank 0.
+class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
+ public:
+  ~MumpsLinearOpWithSolve() override { release(); }
+
+  /// Factorises the matrix of `src` (collective), reusing the analysis while
+  /// the sparsity pattern is unchanged.
+  void initialize(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& src) {
+    src_ = src;
+    fwdOp_ = src->getOp();
+    auto A = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Converter::getConstTpetraOperator(fwdOp_), true);
+    const auto rowMap = A->getRowMap();
+    const auto colMap = A->getColMap();
+    const GlobalIndex base = rowMap->getMinAllGlobalIndex();
+    const GlobalIndex n = GlobalIndex(rowMap->getGlobalNumElements());
+    if (rowMap->getMaxAllGlobalIndex() - base + 1 != n)
+      throw std::runtime_error("MUMPS: the matrix rows are not numbered contiguously");
+
+    // distributed coordinates, 1-based
+    std::vector<int> irn, jcn;
+    std::vector<Real> val;
+    irn.reserve(A->getNodeNumEntries());
+    jcn.reserve(A->getNodeNumEntries());
+    val.reserve(A->getNodeNumEntries());
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    for (LocalIndex r = 0; r < LocalIndex(A->getNodeNumRows()); ++r) {
+      A->getLocalRowView(r, cols, vals);
+      const int row = int(rowMap->getGlobalElement(r) - base + 1);
+      for (std::size_t k = 0; k < cols.extent(0); ++k) {
+        irn.push_back(row);
+        jcn.push_back(int(colMap->getGlobalElement(cols(k)) - base + 1));
+        val.push_back(vals(k));
+      }
+    }
+
+    const auto comm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(rowMap->getComm(), true);
+    const bool samePattern = initialized_ && n == n_ && irn == irn_ && jcn == jcn_;
+    if (!samePattern) {
+      release();
+      id_ = DMUMPS_STRUC_C();
+      id_.comm_fortran = MPI_Comm_c2f(*comm->getRawMpiComm());
+      id_.par = 1;  // rank 0 works too
+      id_.sym = 0;  // general: Dirichlet rows make the matrix unsymmetric
+      id_.job = -1;
+      dmumps_c(&id_);
+      if (infog(id_, 1) < 0) throw std::runtime_error(failure("initialisation", id_));
+      initialized_ = true;
+      icntl(id_, 1) = -1;  // no messages
+      icntl(id_, 2) = -1;
+      icntl(id_, 3) = -1;
+      icntl(id_, 4) = 0;
+      icntl(id_, 5) = 0;   // assembled matrix
+      icntl(id_, 18) = 3;  // distributed by rows, as Tpetra holds it
+      icntl(id_, 20) = 0;  // dense right-hand sides on rank 0
+      icntl(id_, 21) = 0;  // solution on rank 0
+      n_ = n;
+      irn_ = std::move(irn);
+      jcn_ = std::move(jcn);
+      id_.n = int(n);
+      id_.nnz_loc = MUMPS_INT8(irn_.size());
+      id_.irn_loc = irn_.data();
+      id_.jcn_loc = jcn_.data();
+      id_.job = 1;
+      dmumps_c(&id_);
+      if (infog(id_, 1) < 0) throw std::runtime_error(failure("analysis", id_));
+
+      // rank 0 holds every row of the gathered vectors
+      std::vector<GlobalIndex> all;
+      if (comm->getRank() == 0)
+        for (GlobalIndex g = 0; g < n; ++g) all.push_back(base + g);
+      rootMap_ = Teuchos::rcp(new Map(Tpetra::global_size_t(n), all.data(), all.size(), rowMap->getIndexBase(), comm));
+      rangeMap_ = A->getRangeMap();
+      gather_ = Teuchos::rcp(new Import(rangeMap_, rootMap_));
+      scatter_ = Teuchos::rcp(new Import(rootMap_, A->getDomainMap()));
+    }
+    val_ = std::move(val);
+    id_.a_loc = val_.data();
+    // numerical factorisation; out of memory: more workspace, twice
+    for (int attempt = 0;; ++attempt) {
+      id_.job = 2;
+      dmumps_c(&id_);
+      if (infog(id_, 1) >= 0) break;
+      if (infog(id_, 1) != -9 || attempt == 2) throw std::runtime_error(failure("factorisation", id_));
+      icntl(id_, 14) *= 2;
+    }
+  }
+
+  void release() {
+    if (!initialized_) return;
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (finalized) return;  // destroyed after MPI: the process is ending anyway
+    id_.job = -2;
+    dmumps_c(&id_);
+    initialized_ = false;
+  }
+
+  Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>> source() const { return src_; }
+
+  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> range() const override { return fwdOp_->range(); }
+  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> domain() const override { return fwdOp_->domain(); }
+
+ protected:
+  bool opSupportedImpl(Thyra::EOpTransp t) const override { return Thyra::opSupported(*fwdOp_, t); }
+  void applyImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<Real>& X,
+                 const Teuchos::Ptr<Thyra::MultiVectorBase<Real>>& Y, const Real alpha,
+                 const Real beta) const override {
+    Thyra::apply(*fwdOp_, t, X, Y, alpha, beta);
+  }
+  bool solveSupportsImpl(Thyra::EOpTransp t) const override { return Thyra::real_trans(t) == Thyra::NOTRANS; }
+  bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp, const Thyra::SolveMeasureType&) const override {
+    return true;  // a direct solve meets any tolerance
+  }
+  Thyra::SolveStatus<Real> solveImpl(const Thyra::EOpTransp, const Thyra::MultiVectorBase<Real>& B,
+                                     const Teuchos::Ptr<Thyra::MultiVectorBase<Real>>& X,
+                                     const Teuchos::Ptr<const Thyra::SolveCriteria<Real>>) const override {
+    auto b = Converter::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
+    auto x = Converter::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
+    MultiVector root(rootMap_, b->getNumVectors());
+    root.doImport(*b, *gather_, Tpetra::INSERT);
+    {
+      auto data = root.getLocalViewHost(Tpetra::Access::ReadWrite);  // column-major, leading dimension n on rank 0
+      id_.rhs = data.data();
+      id_.nrhs = int(root.getNumVectors());
+      id_.lrhs = root.getLocalLength() > 0 ? int(root.getStride()) : int(n_);
+      id_.job = 3;
+      dmumps_c(&id_);
+    }
+    if (infog(id_, 1) < 0) throw std::runtime_error(failure("solve", id_));
+    x->doImport(root, *scatter_, Tpetra::INSERT);
+    Thyra::SolveStatus<Real> status;
+    status.solveStatus = Thyra::SOLVE_STATUS_CONVERGED;
+    return status;
+  }
+
+ private:
+  Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>> src_;
+  Teuchos::RCP<const Thyra::LinearOpBase<Real>> fwdOp_;
+  mutable DMUMPS_STRUC_C id_{};
+  bool initialized_ = false;
+  GlobalIndex n_ = 0;
+  std::vector<int> irn_, jcn_;
+  std::vector<Real> val_;
+  Teuchos::RCP<const Map> rootMap_, rangeMap_;
+  Teuchos::RCP<const Import> gather_, scatter_;
+};
+
+}  // namespace
+
+bool MumpsLinearOpWithSolveFactory::isCompatible(const Thyra::LinearOpSourceBase<Real>& fwdOpSrc) const {
+  try {
+    return !Teuchos::rcp_dynamic_cast<const CrsMatrix>(Converter::getConstTpetraOperator(fwdOpSrc.getOp())).is_null();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> MumpsLinearOpWithSolveFactory::createOp() const {
+  return Teuchos::rcp(new MumpsLinearOpWithSolve());
+}
+
+void MumpsLinearOpWithSolveFactory::initializeOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
+                                                 Thyra::LinearOpWithSolveBase<Real>* Op,
+                                                 const Thyra::ESupportSolveUse) const {
+  TEUCHOS_TEST_FOR_EXCEPT(Op == nullptr || fwdOpSrc.is_null());
+  Teuchos::dyn_cast<MumpsLinearOpWithSolve>(*Op).initialize(fwdOpSrc);
+}
+
+void MumpsLinearOpWithSolveFactory::initializePreconditionedOp(
+    const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
+    const Teuchos::RCP<const Thyra::PreconditionerBase<Real>>&, Thyra::LinearOpWithSolveBase<Real>* Op,
+    const Thyra::ESupportSolveUse supportSolveUse) const {
+  initializeOp(fwdOpSrc, Op, supportSolveUse);  // the preconditioner is not needed
+}
+
+void MumpsLinearOpWithSolveFactory::uninitializeOp(Thyra::LinearOpWithSolveBase<Real>* Op,
+                                                   Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* fwdOpSrc,
+                                                   Teuchos::RCP<const Thyra::PreconditionerBase<Real>>* prec,
+                                                   Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* approxFwdOpSrc,
+                                                   Thyra::ESupportSolveUse*) const {
+  TEUCHOS_TEST_FOR_EXCEPT(Op == nullptr);
+  auto& op = Teuchos::dyn_cast<MumpsLinearOpWithSolve>(*Op);
+  if (fwdOpSrc) *fwdOpSrc = op.source();
+  if (prec) *prec = Teuchos::null;
+  if (approxFwdOpSrc) *approxFwdOpSrc = Teuchos::null;
+}
+
+void MumpsLinearOpWithSolveFactory::setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& paramList) {
+  paramList->validateParametersAndSetDefaults(*getValidParameters());
+  params_ = paramList;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::unsetParameterList() {
+  auto old = params_;
+  params_ = Teuchos::null;
+  return old;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParameters() const {
+  static const auto valid = Teuchos::rcp(new Teuchos::ParameterList("MUMPS"));
+  return valid;
+}
+
+}  // namespace cgcm::solver
