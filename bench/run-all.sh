@@ -8,12 +8,15 @@ echo "== element kernels (one core)"
 "$build/bin/bench_fem_kernel"
 echo "== one Newton iteration of the bulk problem"
 "$build/bin/bench_newton_iteration" axisymmetric 38 38 "Amesos2 KLU2"
+"$build/bin/bench_newton_iteration" axisymmetric 38 38 "MUMPS"
 "$build/bin/bench_newton_iteration" 3D 32 32 32 "Belos GMRES + MueLu" 1
 $mpi -np 2 "$build/bin/bench_newton_iteration" 3D 32 32 32 "Belos GMRES + MueLu" 1
 "$build/bin/bench_newton_iteration" 3D 46 46 46 "Belos GMRES + MueLu" 1
 echo "== one approach-retraction curve of the default deck (split in summary.txt)"
 "$build/bin/cgcm" inputs/sphere-on-half-space.xml Output/Directory=output/bench-demo "Output/Print Steps=false"
 cat output/bench-demo/summary.txt
+echo "== the linear solvers on the default deck, mesh levels 0 and 1"
+bash bench/linear_solvers.sh "$build" 0 1
 echo "== Method 3 kernel and search, per pair"
 "$build/bin/bench_interaction_kernel"
 echo "== closest-point search: AABB build and queries per Newton iteration"

@@ -92,6 +92,8 @@ def minimum_force(csv_path):
     the minimum lies inside the path (not at its last state)."""
     with open(csv_path, newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["stable"] == "1"]
+    if not rows:  # a run stopped before its first state
+        return float("nan"), float("nan"), False
     u = [float(r["u"]) for r in rows]
     p = [float(r["P"]) for r in rows]
     k = min(range(len(p)), key=p.__getitem__)
