@@ -229,6 +229,10 @@ def plot(table, png):
                 label=f"CGCM γL = {gl}, finite strain")
         ax.plot(x, [-float(r["small_P_over_piwR"]) for r in sel], "s:", color=f"C{i}", mfc="none", ms=6, lw=0.8,
                 label=f"CGCM γL = {gl}, small strain")
+    coarse = [r for r in rows if float(r["cell_over_ell"]) > 0.5]
+    for r in coarse:  # cells of about a cohesive length: the contact edge is trapped ring by ring
+        ax.annotate(f"cells {float(r['cell_over_ell']):.1f} ℓ", (float(r["mu"]), -float(r["finite_P_over_piwR"])),
+                    xytext=(-62, -4), textcoords="offset points", fontsize=7.5, color="0.3")
     ax.set_xscale("log")
     ax.set_xlabel("Tabor parameter μ")
     ax.set_ylabel("pull-off force  |P_min| / (π w R)")
