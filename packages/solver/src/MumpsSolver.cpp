@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -74,7 +75,11 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
     }
 
     const auto comm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(rowMap->getComm(), true);
-    const bool samePattern = initialized_ && n == n_ && irn == irn_ && jcn == jcn_;
+    // every rank must take the same branch: the MUMPS phases are collective
+    const int sameHere = initialized_ && n == n_ && irn == irn_ && jcn == jcn_ ? 1 : 0;
+    int sameEverywhere = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, sameHere, Teuchos::outArg(sameEverywhere));
+    const bool samePattern = sameEverywhere == 1;
     if (!samePattern) {
       release();
       id_ = DMUMPS_STRUC_C();

@@ -500,9 +500,9 @@ namespace cgcm {
 namespace {
 
 // An unsymmetric tridiagonal matrix (a convection-diffusion stencil) on every
-// rank's rows, with values scaled by `scale` and, if `widen`, one more
-// coupling per row (a new sparsity pattern).
-RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double scale, bool widen) {
+// rank's rows, with values scaled by `scale` and one more coupling in the rows
+// below `widenBelow` (a new sparsity pattern; on two ranks, rows 0-9 are rank 0's only).
+RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double scale, GlobalIndex widenBelow) {
   auto A = Teuchos::rcp(new assembly::CrsMatrix(map, 4));
   const GlobalIndex n = GlobalIndex(map->getGlobalNumElements());
   for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
@@ -511,7 +511,7 @@ RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double sca
     std::vector<double> vals{4.0 * scale};
     if (i > 0) cols.push_back(i - 1), vals.push_back(-1.5 * scale);
     if (i + 1 < n) cols.push_back(i + 1), vals.push_back(-0.5 * scale);
-    if (widen && i + 7 < n) cols.push_back(i + 7), vals.push_back(0.25 * scale);
+    if (i < widenBelow && i + 7 < n) cols.push_back(i + 7), vals.push_back(0.25 * scale);
     A->insertGlobalValues(i, Teuchos::ArrayView<const GlobalIndex>(cols), Teuchos::ArrayView<const double>(vals));
   }
   A->fillComplete();
@@ -519,7 +519,8 @@ RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double sca
 }
 
 // MUMPS solves to round-off on any number of ranks, with several right-hand
-// sides, after new values on the same pattern and after a new pattern; a
+// sides, after new values on the same pattern and after a new pattern (also
+// one that changes on one rank only); a
 // singular matrix is an error that says so.
 TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
   auto comm = Tpetra::getDefaultComm();
@@ -529,9 +530,9 @@ TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
   settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
   const auto factory = solver::buildLinearSolver(settings, comm->getSize(), 1);
   const auto lows = factory->createOp();
-  for (const auto& [scale, widen] : {std::pair{1.0, false}, std::pair{3.0, false}, std::pair{1.0, true}}) {
-    SCOPED_TRACE("scale " + std::to_string(scale) + (widen ? ", widened pattern" : ""));
-    const auto A = stencil(map, scale, widen);
+  for (const auto& [scale, widenBelow] : {std::pair<double, GlobalIndex>{1.0, 0}, {3.0, 0}, {1.0, 10}, {1.0, 101}}) {
+    SCOPED_TRACE("scale " + std::to_string(scale) + ", extra couplings in rows below " + std::to_string(widenBelow));
+    const auto A = stencil(map, scale, widenBelow);
     const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(A));
     Thyra::initializeOp(*factory, op, lows.ptr());
     assembly::MultiVector exact(map, 2), b(map, 2), x(map, 2);
