@@ -27,7 +27,7 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   valid = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
   const auto types = validators::choices(std::vector<std::string>(std::begin(kTypes), std::end(kTypes)));
   valid->set("Type", "auto",
-             "auto: in 2D MUMPS on one rank, Belos GMRES + Ifpack2 on several; in 3D Belos GMRES + MueLu; or MUMPS (direct, "
+             "auto: MUMPS in 2D, Belos GMRES + MueLu in 3D; or MUMPS (direct, "
              "any number of ranks), Amesos2 KLU2 (direct, one rank only), Belos GMRES + Ifpack2, Belos GMRES + MueLu, "
              "Stratimikos (use the Stratimikos sublist as is)",
              types);
@@ -47,11 +47,11 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::Parame
   if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
   // 3D (3 dofs per node): MueLu. Measured on the tetrahedral quarter sphere on half-space (5.9k dofs, one
   // rank): 0.32 s per solve against 1.1 s for KLU2 and 4 s for GMRES + RILUK(2).
-  // 2D on one rank: MUMPS. Measured on the default deck (side by side, same machine load): 0.89 s against
-  // 1.48 s per Newton iteration for KLU2 at Mesh Refinement 2 (40k unknowns), 2.8 s against 4.0 s of linear
-  // solves over the level-0 path; identical load curves (1e-14).
-  if (type == "auto")
-    type = dofsPerNode == 3 ? "Belos GMRES + MueLu" : numRanks == 1 ? "MUMPS" : "Belos GMRES + Ifpack2";
+  // 2D: MUMPS. Measured on the default deck: on one rank 0.89 s against 1.48 s per Newton iteration for KLU2
+  // at Mesh Refinement 2 (40k unknowns, side by side on a loaded machine), 2.8 s against 4.0 s of linear
+  // solves over the level-0 path; on two ranks at level 1 14.5 s against 27.3 s for GMRES + RILUK(2) over
+  // the path. Load curves identical to 1e-14.
+  if (type == "auto") type = dofsPerNode == 3 ? "Belos GMRES + MueLu" : "MUMPS";
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Stratimikos"));
   if (type == "MUMPS") {
     p->set("Linear Solver Type", "MUMPS");

@@ -2,8 +2,7 @@
 // Linear solvers through Stratimikos, with Ifpack2 and MueLu registered.
 //
 // Deck sublist "Linear Solver":
-//   Type = "auto" (default): in 2D MUMPS on one rank, Belos GMRES + Ifpack2 on more; in 3D
-//          Belos GMRES + MueLu;
+//   Type = "auto" (default): MUMPS in 2D, Belos GMRES + MueLu in 3D;
 //          "MUMPS": direct, any number of ranks (MumpsSolver.hpp);
 //          "Amesos2 KLU2": direct, one rank only (Debian's KLU2 is wrong on several ranks);
 //          "Belos GMRES + Ifpack2", "Belos GMRES + MueLu": iterative;
