@@ -34,3 +34,17 @@ def columns(exe, *args, notes=False):
         except ValueError:
             out[key] = values
     return out
+
+
+LAMBDA_OVER_MU = 1.15701  # Maugis-Dugdale lambda of the 9-3 half-space law at Tabor mu (analytic-models.md)
+
+
+def lj_sphere_pulloff(exe, mu):
+    """Minimum force / (pi w R) of the Lennard-Jones sphere at Tabor mu (negative)."""
+    return float(rows(exe, "ljsphere", "--mu", f"{mu:.8g}", "--pulloff")[-1]["P_min"])
+
+
+def md_pulloff(exe, lam):
+    """Load-control pull-off / (pi w R) of Maugis-Dugdale at lambda (negative)."""
+    return float(next(r for r in rows(exe, "pulloff", "--model", "md", "--lambda", f"{lam:.8g}")
+                      if r["control"] == "load")["P"])

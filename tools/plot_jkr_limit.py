@@ -15,7 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from analytic_csv import rows  # noqa: E402
+from analytic_csv import LAMBDA_OVER_MU, lj_sphere_pulloff, md_pulloff  # noqa: E402
 
 
 def main():
@@ -26,12 +26,9 @@ def main():
     args = ap.parse_args()
 
     mus = np.geomspace(0.05, 10.0, 14)
-    lj = [float(rows(args.analytic, "ljsphere", "--mu", f"{m:g}", "--pulloff")[-1]["P_min"]) for m in mus]
+    lj = [lj_sphere_pulloff(args.analytic, m) for m in mus]
     md_mu = np.geomspace(0.05, 10.0, 60)
-    md = []
-    for m in md_mu:
-        points = rows(args.analytic, "pulloff", "--model", "md", "--lambda", f"{1.16 * m:g}")
-        md.append(next(float(r["P"]) for r in points if r["control"] == "load"))
+    md = [md_pulloff(args.analytic, LAMBDA_OVER_MU * m) for m in md_mu]
 
     with open(args.table, newline="") as f:
         runs = [r for r in csv.DictReader(f) if r["P_min_over_piwR"] not in ("", "nan")]
@@ -42,7 +39,7 @@ def main():
     ax.text(0.052, -2.005, "Bradley / DMT  −2", va="top", fontsize=8, color="0.4")
     ax.text(0.052, -1.51, "JKR  −1.5", va="top", fontsize=8, color="0.4")
     ax.plot(mus, lj, "k-", lw=1.4, label="Lennard-Jones sphere (Derjaguin, linear elastic)")
-    ax.plot(md_mu, md, "k--", lw=1.0, label="Maugis–Dugdale, λ = 1.16 μ")
+    ax.plot(md_mu, md, "k--", lw=1.0, label="Maugis–Dugdale, λ = 1.157 μ")
     markers = {"gammaL50": ("o", "C0", "CGCM, γL = 50"), "gammaL200": ("s", "C1", "CGCM, γL = 200"),
                "gammaL800": ("^", "C2", "CGCM, γL = 800")}
     seen = set()

@@ -35,11 +35,14 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from analytic_csv import rows  # noqa: E402
+from analytic_csv import LAMBDA_OVER_MU, lj_sphere_pulloff, md_pulloff, rows  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NU = 0.2
-LAMBDA_OVER_MU = 1.15701  # the 9-3 half-space law (doc/analytic-models.md)
+
+
+def exe():
+    return os.path.join(BUILD, "bin", "cgcm-analytic")
 
 
 def analytic(build, *args):
@@ -193,9 +196,8 @@ def main():
                 scale = math.pi * c["w"]
                 pf = rf.get("P_min", float("nan")) / scale
                 ps = rs.get("P_min", float("nan")) / scale
-                lj = float(analytic(BUILD, "ljsphere", "--mu", f"{c['mu']:.8g}", "--pulloff")[-1]["P_min"])
-                md = float(next(r for r in analytic(BUILD, "pulloff", "--model", "md", "--lambda",
-                                                    f"{c['lambda']:.8g}") if r["control"] == "load")["P"])
+                lj = lj_sphere_pulloff(exe(), c["mu"])
+                md = md_pulloff(exe(), c["lambda"])
                 status = ";".join(f"{k}: {r['status']}" + ("" if r.get("inside", False) else " (minimum not inside)")
                                   for k, r in (("finite", rf), ("small", rs))
                                   if r["status"] != "completed" or not r.get("inside", False)) or "ok"
@@ -212,9 +214,8 @@ def plot(table, png):
     with open(table, newline="") as f:
         rows = list(csv.DictReader(f))
     mus = [10 ** (math.log10(0.04) + i * (math.log10(6.0) - math.log10(0.04)) / 24) for i in range(25)]
-    lj = [-float(analytic(BUILD, "ljsphere", "--mu", f"{m:.6g}", "--pulloff")[-1]["P_min"]) for m in mus]
-    md = [-float(next(r for r in analytic(BUILD, "pulloff", "--model", "md", "--lambda", f"{LAMBDA_OVER_MU * m:.6g}")
-                      if r["control"] == "load")["P"]) for m in mus]
+    lj = [-lj_sphere_pulloff(exe(), m) for m in mus]
+    md = [-md_pulloff(exe(), LAMBDA_OVER_MU * m) for m in mus]
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for y, label in ((2.0, "Bradley / DMT  2"), (1.5, "JKR  1.5")):
         ax.axhline(y, color="0.6", lw=0.8, ls=":")

@@ -114,8 +114,7 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
       if (comm->getRank() == 0)
         for (GlobalIndex g = 0; g < n; ++g) all.push_back(base + g);
       rootMap_ = Teuchos::rcp(new Map(Tpetra::global_size_t(n), all.data(), all.size(), rowMap->getIndexBase(), comm));
-      rangeMap_ = A->getRangeMap();
-      gather_ = Teuchos::rcp(new Import(rangeMap_, rootMap_));
+      gather_ = Teuchos::rcp(new Import(A->getRangeMap(), rootMap_));
       scatter_ = Teuchos::rcp(new Import(rootMap_, A->getDomainMap()));
     }
     val_ = std::move(val);
@@ -186,7 +185,7 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
   GlobalIndex n_ = 0;
   std::vector<int> irn_, jcn_;
   std::vector<Real> val_;
-  Teuchos::RCP<const Map> rootMap_, rangeMap_;
+  Teuchos::RCP<const Map> rootMap_;
   Teuchos::RCP<const Import> gather_, scatter_;
 };
 
