@@ -2,8 +2,11 @@
 // assembly, Jacobian assembly (residual + tangent + matrix fill), Dirichlet
 // rows, linear solve (set-up + solve). Prints one line per case.
 //
-//   bench_newton_iteration [3D NX NY NZ | axisymmetric NX NY] [SOLVER] [REPEATS]
+//   bench_newton_iteration [3D NX NY NZ | axisymmetric NX NY] [SOLVER] [REPEATS] [NULL SPACE]
 //   SOLVER: a "Solver/Linear Solver/Type" value (default: auto)
+//   NULL SPACE (MueLu): "translations" (default, as cgcm runs by default: one unit
+//   vector per component) or "rigid" (translations and rotations, "MueLu Near
+//   Null Space = rigid body modes")
 #include <Teuchos_CommHelpers.hpp>
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -35,6 +38,11 @@ int main(int argc, char** argv) {
   const int nx = std::stoi(a.at(k++)), ny = std::stoi(a.at(k++)), nz = threeD ? std::stoi(a.at(k++)) : 0;
   const std::string solverType = k < a.size() ? a[k++] : "auto";
   const int repeats = k < a.size() ? std::stoi(a[k++]) : 3;
+  const std::string nullSpace = k < a.size() ? a[k++] : "translations";
+  if (nullSpace != "rigid" && nullSpace != "translations") {
+    if (root) std::fprintf(stderr, "NULL SPACE = \"%s\": expected \"rigid\" or \"translations\"\n", nullSpace.c_str());
+    return 2;
+  }
 
   auto mesh = std::make_shared<mesh::Mesh>();
   assembly::Formulation form;
@@ -65,7 +73,9 @@ int main(int argc, char** argv) {
   Teuchos::ParameterList settings;
   settings.set("Type", solverType);
   settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
-  auto factory = solver::buildLinearSolver(settings, comm->getSize(), dim);
+  auto factory = solver::buildLinearSolver(
+      settings, comm->getSize(), dim,
+      nullSpace == "rigid" ? assembly::rigidBodyModes(*dofs, *mesh, form) : Teuchos::null);
 
   assembly::Vector u(dofs->ownedMap()), f(dofs->ownedMap()), du(dofs->ownedMap());
   const double load = -0.05;
@@ -82,6 +92,7 @@ int main(int argc, char** argv) {
   auto J = problem.createMatrix();
 
   double tRes = 1e30, tJac = 1e30, tBc = 1e30, tSolve = 1e30;
+  int krylovIterations = 0;
   for (int r = 0; r < repeats; ++r) {
     comm->barrier();
     auto t = Clock::now();
@@ -109,6 +120,8 @@ int main(int argc, char** argv) {
     comm->barrier();
     tSolve = std::min(tSolve, since(t));
     if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED && root) std::printf("  (linear solve unconverged)\n");
+    if (!status.extraParameters.is_null() && status.extraParameters->isType<int>("Iteration Count"))
+      krylovIterations = status.extraParameters->get<int>("Iteration Count");
   }
   // residual of the linear solve, as a check that the numbers are for a real solve
   assembly::Vector r(dofs->ownedMap());
@@ -118,9 +131,9 @@ int main(int argc, char** argv) {
   const long long cells = mesh->numCells();
   if (root)
     std::printf("%-13s %7lld cells %9lld dofs  np=%d  residual %8.4f s  jacobian %8.4f s (%6.2f us/cell/rank)  "
-                "bc %7.4f s  solve[%s] %8.3f s  |J du - f|/|f| = %.1e\n",
+                "bc %7.4f s  solve[%s, %s] %8.3f s (%d iterations)  |J du - f|/|f| = %.1e\n",
                 assembly::formulationName(form), cells, (long long)dofs->ownedMap()->getGlobalNumElements(),
-                comm->getSize(), tRes, tJac, 1e6 * tJac * comm->getSize() / cells, tBc, solverType.c_str(), tSolve,
-                rel);
+                comm->getSize(), tRes, tJac, 1e6 * tJac * comm->getSize() / cells, tBc, solverType.c_str(),
+                nullSpace.c_str(), tSolve, krylovIterations, rel);
   return 0;
 }

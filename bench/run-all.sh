@@ -17,6 +17,8 @@ echo "== one approach-retraction curve of the default deck (split in summary.txt
 cat output/bench-demo/summary.txt
 echo "== the linear solvers on the default deck, mesh levels 0 and 1"
 bash bench/linear_solvers.sh "$build" 0 1
+echo "== the 3D iterative solver: near-null space, forcing term (GMRES + MueLu)"
+bash bench/iterative_solvers_3d.sh "$build"
 echo "== Method 3 kernel and search, per pair"
 "$build/bin/bench_interaction_kernel"
 echo "== closest-point search: AABB build and queries per Newton iteration"

@@ -819,10 +819,12 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   return s;
 }
 
-Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+namespace {
+
+Discretization discretize(const Teuchos::RCP<assembly::DofMap>& dofs, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
   Discretization d;
-  d.dofs = Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
+  d.dofs = dofs;
   d.problem = setup.bodyMaterials.empty()
                     ? std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.material)
                     : std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.bodyMaterials);
@@ -866,6 +868,27 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
   d.model = Teuchos::rcp(new solver::ModelEvaluator(d.problem, d.dirichlet, std::move(linearSolver),
                                                     std::move(parameters)));
   return d;
+}
+
+Teuchos::RCP<assembly::DofMap> distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                          const ProblemSetup& setup) {
+  return Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
+}
+
+}  // namespace
+
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
+  return discretize(distribute(comm, setup), setup, std::move(linearSolver));
+}
+
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          const Teuchos::ParameterList& linearSolver) {
+  const auto dofs = distribute(comm, setup);
+  const bool rigid = linearSolver.get<std::string>("MueLu Near Null Space") == "rigid body modes";
+  const auto modes = rigid ? assembly::rigidBodyModes(*dofs, *setup.mesh, setup.formulation) : Teuchos::null;
+  return discretize(dofs, setup,
+                    solver::buildLinearSolver(linearSolver, comm->getSize(), dofs->dofsPerNode(), modes));
 }
 
 }  // namespace cgcm::app

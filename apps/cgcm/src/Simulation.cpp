@@ -98,11 +98,12 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Everything that can be rejected is checked before any work starts.
   ProblemSetup setup = buildProblem(deck);
   const PathPlan plan = planPath(deck.sublist("Loading"), setup);
-  auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"));
+  auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
+                                                               deck.sublist("Solver").sublist("Linear Solver"));
   newtonSettings.forceScale = setup.forceScale;
   const int dim = assembly::formulationDim(setup.formulation);
-  auto linearSolver =
-      solver::buildLinearSolver(deck.sublist("Solver").sublist("Linear Solver"), comm->getSize(), dim);
+  const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
+  solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim);  // rejects bad settings now
   for (const auto& c : setup.conditions) setup.mesh->nodeSet(c.nodeSet);
   Teuchos::ParameterList loca = deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA");
   {
@@ -137,7 +138,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     io::writeDeck(deck, dir + "/parameters.xml");
   });
 
-  const Discretization disc = discretize(comm, setup, linearSolver);
+  const Discretization disc = discretize(comm, setup, linearSolverSettings);
   if (resume && resume->u.size() != disc.dofs->ownedMap()->getGlobalNumElements())
     throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
                      " unknowns, the deck's problem " +
@@ -316,6 +317,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   result.curve = recorder.curve;
   result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+  {
+    // LOCA does not report its solves (its groups do not log them to NOX's statistics).
+    result.linearSolves = newton.linearSolves().solves;
+    result.krylovIterations = newton.linearSolves().iterations;
+  }
   const auto graph = problem->graph();  // collective only when it has to be built
   result.matrixRows = graph->getGlobalNumRows();
   result.matrixEntries = graph->getGlobalNumEntries();

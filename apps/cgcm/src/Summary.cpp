@@ -51,13 +51,21 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
                 c.size(), unstable, iterations, double(iterations) / std::max<std::size_t>(1, c.size()),
                 result.continuationSteps, result.graphRestarts);
   both(buf);
+  const char* which = result.continuationSteps > 0 ? "linear solves outside continuation" : "linear solves";
+  if (result.krylovIterations > 0)
+    std::snprintf(buf, sizeof buf, "%s = %ld, Krylov iterations = %ld (%.1f per solve)\n", which,
+                  result.linearSolves, result.krylovIterations,
+                  double(result.krylovIterations) / double(std::max(1L, result.linearSolves)));
+  else
+    std::snprintf(buf, sizeof buf, "%s = %ld (direct solver)\n", which, result.linearSolves);
+  both(buf);
   std::snprintf(buf, sizeof buf, "Jacobian at the end: %zu rows, %zu entries (%.1f per row)\n",
                 result.matrixRows, result.matrixEntries,
                 double(result.matrixEntries) / std::max<std::size_t>(1, result.matrixRows));
   both(buf);
   std::snprintf(buf, sizeof buf,
                 "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s (%s %.3f s) + matrix "
-                "graph couplings %.3f s + linear solves, NOX and LOCA %.3f s\n",
+                "graph (couplings and build) %.3f s + linear solves, NOX and LOCA %.3f s\n",
                 result.pathSeconds, result.assemblySeconds, result.interactionSeconds,
                 result.volumePairs.empty() ? "closest-point search" : "pair lists", result.searchSeconds,
                 result.graphSeconds,

@@ -132,27 +132,13 @@ LocalIndex BulkPart::numLocalCells() const {
   return n;
 }
 
-void BulkPart::countCellsPerNode(std::vector<int>& cellsPerNode) const {
+void BulkPart::appendCellNeighbours(std::vector<std::vector<LocalIndex>>& neighbours) const {
   for (const auto& b : blocks_)
     for (std::size_t c = 0; c < b.dofLids.extent(0); ++c)
-      for (int a = 0; a < b.numNodes; ++a) ++cellsPerNode[b.dofLids(c, a * dim_) / dim_];
-}
-
-int BulkPart::maxNodesPerCell() const {
-  int n = 0;
-  for (const auto& b : blocks_) n = std::max(n, b.numNodes);
-  return n;
-}
-
-void BulkPart::insertCliques(Graph& graph) const {
-  for (const auto& b : blocks_) {
-    const int nd = b.numNodes * dim_;
-    std::vector<GlobalIndex> gids(nd);
-    for (std::size_t c = 0; c < b.dofLids.extent(0); ++c) {
-      for (int k = 0; k < nd; ++k) gids[k] = overlap_->getGlobalElement(b.dofLids(c, k));
-      for (int k = 0; k < nd; ++k) graph.insertGlobalIndices(gids[k], nd, gids.data());
-    }
-  }
+      for (int a = 0; a < b.numNodes; ++a) {
+        auto& list = neighbours[b.dofLids(c, a * dim_) / dim_];
+        for (int k = 0; k < b.numNodes; ++k) list.push_back(b.dofLids(c, k * dim_) / dim_);
+      }
 }
 
 void BulkPart::setColumnMap(const Map& columns) {

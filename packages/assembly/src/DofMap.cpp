@@ -55,4 +55,34 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
   importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));
 }
 
+Teuchos::RCP<MultiVector> rigidBodyModes(const DofMap& dofs, const mesh::Mesh& mesh, Formulation formulation) {
+  if (formulation == Formulation::Axisymmetric) return Teuchos::null;
+  const int dim = dofs.dofsPerNode();
+  const int numModes = dim == 3 ? 6 : 3;
+  auto modes = Teuchos::rcp(new MultiVector(dofs.ownedMap(), numModes));
+  // About the centroid, so that the rotations are not dominated by a translation.
+  Real centre[3] = {0.0, 0.0, 0.0};
+  for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
+    for (int i = 0; i < dim; ++i) centre[i] += mesh.coord(n, i) / Real(mesh.numNodes());
+  auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const Map& map = *dofs.ownedMap();
+  for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+    const GlobalIndex gid = map.getGlobalElement(LocalIndex(lid));
+    const auto node = LocalIndex(gid / dim);
+    const int c = int(gid % dim);
+    Real x[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < dim; ++i) x[i] = mesh.coord(node, i) - centre[i];
+    for (int m = 0; m < numModes; ++m) v(lid, m) = 0.0;
+    v(lid, c) = 1.0;  // translations
+    if (dim == 2) {
+      v(lid, 2) = c == 0 ? -x[1] : x[0];  // rotation in the plane
+    } else {
+      // rotations about x, y, z: omega x r
+      const Real rot[3][3] = {{0.0, -x[2], x[1]}, {x[2], 0.0, -x[0]}, {-x[1], x[0], 0.0}};
+      for (int axis = 0; axis < 3; ++axis) v(lid, 3 + axis) = rot[axis][c];
+    }
+  }
+  return modes;
+}
+
 }  // namespace cgcm::assembly

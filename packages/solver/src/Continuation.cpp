@@ -323,7 +323,8 @@ Continuation::~Continuation() = default;
 namespace {
 
 // The parameter list of one stepper: LOCA's and the corrector's (NOX).
-Teuchos::RCP<Teuchos::ParameterList> runParameters(const Teuchos::ParameterList& loca, const std::string& name,
+Teuchos::RCP<Teuchos::ParameterList> runParameters(const Teuchos::ParameterList& loca, const NewtonSettings& newton,
+                                                   const std::string& name,
                                                    Real start, Real lower, Real upper, Real initialStep,
                                                    int maxSteps, bool print) {
   auto params = Teuchos::rcp(new Teuchos::ParameterList("cgcm continuation"));
@@ -340,6 +341,8 @@ Teuchos::RCP<Teuchos::ParameterList> runParameters(const Teuchos::ParameterList&
   nox.set("Nonlinear Solver", "Line Search Based");
   nox.sublist("Line Search").set("Method", "Full Step");
   nox.sublist("Direction").set("Method", "Newton");
+  // LOCA's predictor and bordering solves reuse this tolerance: always the constant one.
+  setLinearSolveControls(newton, false, nox.sublist("Direction").sublist("Newton"));
   // Evaluation errors (an inverted cell, touching surfaces) fail the step, which LOCA then cuts back.
   nox.set("Catch Throws During Solve", true);
   auto& printing = nox.sublist("Printing");
@@ -357,7 +360,7 @@ Teuchos::RCP<Teuchos::ParameterList> runParameters(const Teuchos::ParameterList&
 
 void Continuation::validate(const Vector& x) {
   const auto p = model_->parameters();
-  auto params = runParameters(*loca_, model_->parameterNames()[0], p[0], p[0] - 1.0, p[0] + 1.0, 1e-3,
+  auto params = runParameters(*loca_, newton_, model_->parameterNames()[0], p[0], p[0] - 1.0, p[0] + 1.0, 1e-3,
                               loca_->sublist("Stepper").get<int>("Max Steps"), false);
   params->sublist("NOX").sublist("Printing").set("Output Information", 0);
   auto data = LOCA::createGlobalData(params);
@@ -421,7 +424,7 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
   for (;;) {
     model_->clearGraphOutdated();
     if (!model_->graphCovers(*x)) model_->growGraph(*x, false);
-    auto params = runParameters(*loca_, name, p[segment.parameter], lower, upper, initialStep, maxSteps, print_);
+    auto params = runParameters(*loca_, newton_, name, p[segment.parameter], lower, upper, initialStep, maxSteps, print_);
     lastParams_ = params;
     auto data = LOCA::createGlobalData(params);
     LOCA::ParameterVector pv;

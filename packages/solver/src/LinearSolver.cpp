@@ -36,13 +36,33 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   valid->set("Max Iterations", 1000, "iteration limit of iterative solvers", intAtLeast(1));
   valid->set("Krylov Space", 200, "GMRES restart length", intAtLeast(1));
   valid->set("ILU Fill Level", 2, "level of fill of the Ifpack2 RILUK preconditioner", intAtLeast(0));
+  // Constant by default. Eisenstat-Walker on the 3D sphere deck at 27k unknowns (GMRES + MueLu, 14 states):
+  // 577 Krylov iterations against 1440 and 14.5 s of linear solves against 19.2 s, but 39 Newton iterations
+  // against 33, so that the path took 40.0 s against 38.0 s. Its Newton iteration counts also depend on the
+  // partition, and with them the adaptive step sizes: one and two ranks took different steps on the
+  // three-spheres deck.
+  valid->set("Forcing Term", "constant",
+             "the relative tolerance of iterative solves inside Newton: constant (Tolerance in every iteration) or "
+             "Eisenstat-Walker (NOX's Type 2: 0.01 in the first iteration, then following the decrease of the "
+             "Newton residual, at least Tolerance and at most 0.9: fewer Krylov iterations, more Newton iterations, "
+             "and steps that depend on the number of ranks). States are accepted by the same residual test "
+             "either way; direct solvers solve exactly; continuation (LOCA) and relaxation always use Tolerance",
+             validators::choices({"constant", "Eisenstat-Walker"}));
+  valid->set("MueLu Near Null Space", "translations",
+             "near-null space of the MueLu aggregation: translations (one unit vector per displacement component, "
+             "MueLu's default) or rigid body modes (translations and rotations of the reference configuration; "
+             "3D and plane strain). On the compact bodies measured the rotations cut the Krylov iterations by up "
+             "to a half but made a solve 1.45-1.55 times dearer (larger coarse operators); they may pay on "
+             "slender ones",
+             validators::choices({"translations", "rigid body modes"}));
   valid->sublist("Stratimikos", false, "Stratimikos parameter list, used as is when Type = Stratimikos")
       .disableRecursiveValidation();
   return valid;
 }
 
-Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks,
-                                                          int dofsPerNode) {
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
+    const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
+    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace) {
   std::string type = settings.get<std::string>("Type");
   if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
   // 3D (3 dofs per node): MueLu. Measured on the tetrahedral quarter sphere on half-space (5.9k dofs, one
@@ -87,16 +107,27 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::Parame
     auto& m = p->sublist("Preconditioner Types").sublist("MueLu");
     m.set("verbosity", "none");
     m.set("number of equations", dofsPerNode);  // nodal blocks for aggregation
+    // MueLu's factory converts a Tpetra multivector under "Nullspace" itself (non-const by its type check).
+    if (!nearNullSpace.is_null())
+      m.set("Nullspace", Teuchos::rcp_const_cast<assembly::MultiVector>(nearNullSpace));
     m.set("coarse: type", "RELAXATION");
-    m.set("smoother: type", "RELAXATION");
-    m.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
-    m.sublist("smoother: params").set("relaxation: sweeps", 2);
+    // Chebyshev rather than symmetric Gauss-Seidel: on the hex8 Neo-Hookean box (bench_newton_iteration,
+    // one rank) 1.80 s against 3.33 s per solve at 108k unknowns and 6.4 s against 12.5 s at 311k, with
+    // 25-33 iterations against 20-26; on the 3D sphere deck at lcContact = 0.02 (27k unknowns, 88 entries
+    // per row) 21.2 s against 24.9 s over two states. Load curves the same to 8e-12. (doc/performance.md)
+    m.set("smoother: type", "CHEBYSHEV");
+    m.sublist("smoother: params").set("chebyshev: degree", 2);
+    // Coarsen down to 200 rows rather than MueLu's 2000: the coarsest level has only a Jacobi sweep. The
+    // sphere deck above: 259 Krylov iterations against 391, 19.8 s against 21.2 s; the 311k box 22
+    // iterations against 33, 5.4 s against 6.4 s; the 108k box is unchanged.
+    m.set("coarse: max size", 200);
   }
   return p;
 }
 
-Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const Teuchos::ParameterList& settings,
-                                                                          int numRanks, int dofsPerNode) {
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
+    const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
+    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace) {
   using namespace assembly;
   Stratimikos::DefaultLinearSolverBuilder builder;
   builder.setPreconditioningStrategyFactory(
@@ -106,7 +137,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const 
   Stratimikos::enableMueLu<LocalIndex, GlobalIndex, Node>(builder);
   builder.setLinearSolveStrategyFactory(
       Teuchos::abstractFactoryStd<Thyra::LinearOpWithSolveFactoryBase<Real>, MumpsLinearOpWithSolveFactory>(), "MUMPS");
-  auto params = stratimikosParameters(settings, numRanks, dofsPerNode);
+  auto params = stratimikosParameters(settings, numRanks, dofsPerNode, nearNullSpace);
   try {
     builder.setParameterList(params);
   } catch (const std::exception& e) {

@@ -103,6 +103,23 @@ NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& p) {
   return s;
 }
 
+NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& newton,
+                                              const Teuchos::ParameterList& linearSolver) {
+  NewtonSettings s = fromParameters(newton);
+  s.linearTolerance = linearSolver.get<double>("Tolerance");
+  s.adaptiveLinearTolerance = linearSolver.get<std::string>("Forcing Term") == "Eisenstat-Walker";
+  return s;
+}
+
+void setLinearSolveControls(const NewtonSettings& settings, bool adaptive, Teuchos::ParameterList& newtonDirection) {
+  // NOX passes its own "Tolerance" (default 1e-10) to every solve, and Belos then uses it in place of the
+  // Stratimikos list's "Convergence Tolerance".
+  newtonDirection.sublist("Linear Solver").set("Tolerance", settings.linearTolerance);
+  if (!adaptive) return;
+  newtonDirection.set("Forcing Term Method", "Type 2");
+  newtonDirection.set("Forcing Term Minimum Tolerance", settings.linearTolerance);
+}
+
 NewtonSolver::NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const NewtonSettings& settings)
     : model_(std::move(model)), settings_(settings) {
   noxParams_ = Teuchos::rcp(new Teuchos::ParameterList("NOX"));
@@ -116,6 +133,7 @@ NewtonSolver::NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const NewtonSetti
     ls.set("Method", "Full Step");
   }
   noxParams_->sublist("Direction").set("Method", "Newton");
+  setLinearSolveControls(settings_, settings_.adaptiveLinearTolerance, noxParams_->sublist("Direction").sublist("Newton"));
   noxParams_->sublist("Printing").set("Output Information", 0);
   resetJacobian();
 }
@@ -190,6 +208,7 @@ NewtonResult NewtonSolver::relaxOnCurrentGraph(Vector& u, const RelaxationSettin
   const Teuchos::RCP<::Thyra::PreconditionerFactoryBase<Real>> noPrecFactory;
   Teuchos::RCP<NOX::Thyra::Group> group;
   Teuchos::ParameterList linearSolve("Linear Solver");
+  linearSolve.set("Tolerance", settings_.linearTolerance);
   auto evaluateAt = [&](const NOX::Abstract::Vector& x) {
     group->setX(x);
     if (group->computeF() != NOX::Abstract::Group::Ok) throw NumericalError("residual evaluation failed");
@@ -235,6 +254,10 @@ NewtonResult NewtonSolver::relaxOnCurrentGraph(Vector& u, const RelaxationSettin
       if (group->computeJacobian() != NOX::Abstract::Group::Ok ||
           group->computeNewton(linearSolve) != NOX::Abstract::Group::Ok)
         throw NumericalError("linear solve failed");
+      NOX::SolverStats stats;
+      group->logLastLinearSolveStats(stats);
+      linearSolves_.solves += 1;
+      linearSolves_.iterations += stats.linearSolve.lastLinearSolve_NumIterations;
       auto dx = group->getNewton().clone(NOX::DeepCopy);
       if (dx->innerProduct(*fOld) >= 0.0) {
         rejection = "no descent direction";
@@ -293,6 +316,10 @@ NewtonResult NewtonSolver::runNox(const Teuchos::RCP<NOX::Thyra::Group>& group, 
     auto solver = NOX::Solver::buildSolver(group, convergenceTests(settings_.tolerance(), maxIterations), solverParams);
     const auto status = solver->solve();
     result.iterations = solver->getNumIterations();
+    if (const auto stats = solver->getSolverStatistics()) {
+      linearSolves_.solves += stats->linearSolve.lastNonlinearSolve_NumLinearSolves;
+      linearSolves_.iterations += stats->linearSolve.lastNonlinearSolve_NumLinearIterations;
+    }
     if (status == NOX::StatusTest::Converged) {
       result.converged = true;
       u.assign(*tpetraCopy(solver->getSolutionGroup().getX()));

@@ -57,15 +57,22 @@ struct System {
 
   explicit System(const ParameterList& d) : setup(app::buildProblem(d)) {
     auto comm = Tpetra::getDefaultComm();
-    auto disc = app::discretize(comm, setup,
-                                solver::buildLinearSolver(d.sublist("Solver").sublist("Linear Solver"),
-                                                          comm->getSize(), assembly::formulationDim(setup.formulation)));
+    auto disc = app::discretize(comm, setup, d.sublist("Solver").sublist("Linear Solver"));
     dofs = disc.dofs;
     problem = disc.problem;
     dirichlet = disc.dirichlet;
     model = disc.model;
   }
 };
+
+// One Newton solve from rest at load `load` (the Dirichlet values imposed first).
+solver::NewtonResult solveFromRest(System& sys, const solver::NewtonSettings& settings, Real load) {
+  solver::NewtonSolver newton(sys.model, settings);
+  assembly::Vector u(sys.model->map());
+  sys.model->setLoad(load);
+  sys.dirichlet->impose(load, u);
+  return newton.solve(u);
+}
 
 const char* kFormulations[] = {"plane strain", "axisymmetric", "3D"};
 
@@ -416,15 +423,69 @@ TEST(Newton, AnUnconvergedLinearSolveIsNamedInTheFailure) {
   System sys(*d);
   auto settings = solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton"));
   settings.maxIterations = 4;
-  solver::NewtonSolver newton(sys.model, settings);
-  assembly::Vector u(sys.model->map());
-  sys.model->setLoad(-0.2);
-  sys.dirichlet->impose(-0.2, u);
-  const auto r = newton.solve(u);
+  const auto r = solveFromRest(sys, settings, -0.2);
   ASSERT_FALSE(r.converged);
   EXPECT_TRUE(std::regex_search(r.failure, std::regex("the linear solve of Newton iteration [0-9]+ did not converge "
                                                       "\\(2 iterations, relative residual [-+.e0-9]+\\)")))
       << r.failure;
+}
+
+TEST(Newton, TheDecksLinearToleranceAndForcingTermReachEveryKrylovSolve) {
+  // NOX hands its own tolerance to every linear solve; the deck's must be the one used. A loose constant
+  // tolerance (1e-1) turns Newton's quadratic convergence linear (more iterations); Eisenstat-Walker from
+  // the same minimum keeps it fast. Before the deck's value reached NOX, all three counts were equal.
+  auto iterationsWith = [](const std::vector<std::string>& linear) {
+    std::vector<std::string> o = {"Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
+                                  "Solver/Linear Solver/Type=Belos GMRES + MueLu"};
+    o.insert(o.end(), linear.begin(), linear.end());
+    auto d = deck(o);
+    System sys(*d);
+    auto settings = solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton"),
+                                                          d->sublist("Solver").sublist("Linear Solver"));
+    settings.residualTolerance = 1e-12;
+    settings.maxIterations = 40;
+    const auto r = solveFromRest(sys, settings, -0.2);
+    EXPECT_TRUE(r.converged) << r.failure;
+    return r.iterations;
+  };
+  const int tight = iterationsWith({"Solver/Linear Solver/Tolerance=1e-12"});
+  const int loose = iterationsWith({"Solver/Linear Solver/Tolerance=1e-1"});
+  const int adaptive = iterationsWith({"Solver/Linear Solver/Tolerance=1e-12", "Solver/Linear Solver/Forcing Term=Eisenstat-Walker"});
+  std::printf("Newton iterations: linear tolerance 1e-12 %d, 1e-1 %d, Eisenstat-Walker %d\n", tight, loose, adaptive);
+  EXPECT_LE(tight, 8);
+  EXPECT_GE(loose, tight + 3) << "a 1e-1 linear tolerance cannot keep Newton quadratic";
+  EXPECT_LE(adaptive, tight + 4);
+}
+
+TEST(LinearSolver, RigidBodyModesAreTheNullSpaceOfTheReferenceTangent) {
+  // At x = X the tangent is the linear elasticity operator (no stress, no geometric term): translations and
+  // rotations of the reference configuration give zero force, in 3D and plane strain; axisymmetry has none.
+  for (std::string form : {"3D", "plane strain"}) {
+    SCOPED_TRACE(form);
+    auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Cells X=3", "Geometry/Block/Cells Y=2",
+                   "Geometry/Block/Cells Z=2", "Solver/Linear Solver/Type=Belos GMRES + MueLu",
+                   "Solver/Linear Solver/MueLu Near Null Space=rigid body modes"});
+    System sys(*d);
+    const auto modes = assembly::rigidBodyModes(*sys.dofs, *sys.setup.mesh, sys.setup.formulation);
+    ASSERT_FALSE(modes.is_null());
+    const std::size_t expected = form == "3D" ? 6 : 3;
+    ASSERT_EQ(modes->getNumVectors(), expected);
+    assembly::Vector u(sys.dofs->ownedMap()), f(sys.dofs->ownedMap());
+    auto J = sys.problem->createMatrix();
+    sys.problem->evaluate(u, f, J.get());
+    assembly::MultiVector Jm(sys.dofs->ownedMap(), modes->getNumVectors());
+    J->apply(*modes, Jm);
+    std::vector<Real> force(expected), size(expected);
+    Jm.norm2(force);
+    modes->norm2(size);
+    for (std::size_t m = 0; m < expected; ++m) EXPECT_LT(force[m], 1e-12 * size[m]) << "mode " << m;
+    // and MueLu takes them: a Newton step of the compressed block converges
+    const auto r = solveFromRest(sys, solver::NewtonSettings{}, -0.1);
+    EXPECT_TRUE(r.converged) << r.failure;
+  }
+  auto axi = deck({"Problem/Formulation=axisymmetric"});
+  System sys(*axi);
+  EXPECT_TRUE(assembly::rigidBodyModes(*sys.dofs, *sys.setup.mesh, sys.setup.formulation).is_null());
 }
 
 TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {

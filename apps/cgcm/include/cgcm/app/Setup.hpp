@@ -106,5 +106,9 @@ struct Discretization {
 /// Distributes and assembles `setup` on `comm`. Collective.
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver);
+/// The same, with the linear solver built from a validated "Linear Solver"
+/// sublist (and, when asked for, the rigid-body modes of the distributed mesh).
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          const Teuchos::ParameterList& linearSolver);
 
 }  // namespace cgcm::app

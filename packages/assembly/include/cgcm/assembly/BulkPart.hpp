@@ -31,12 +31,10 @@ class BulkPart {
   const material::NeoHookean& material() const { return material_; }
   LocalIndex numLocalCells() const;
 
-  /// Adds the number of this part's cells at each node (index = overlap
-  /// local dof / dim) to `cellsPerNode`, for a bound on the graph's row length.
-  void countCellsPerNode(std::vector<int>& cellsPerNode) const;
-  int maxNodesPerCell() const;
-  /// Inserts the element cliques into `graph` (in assembly mode).
-  void insertCliques(Graph& graph) const;
+  /// Appends, for each node of this rank's cells (index = overlap local dof /
+  /// dim), the nodes it shares a cell with (overlap node indices, itself
+  /// included, repeated): the element cliques of the matrix graph.
+  void appendCellNeighbours(std::vector<std::vector<LocalIndex>>& neighbours) const;
   /// Caches the matrix column ids of the cells' dofs (after every new graph).
   void setColumnMap(const Map& columns);
 

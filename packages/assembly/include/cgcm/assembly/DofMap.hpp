@@ -7,6 +7,7 @@
 // component i) has global index n * dofsPerNode + i.
 #include <vector>
 
+#include "cgcm/assembly/Formulation.hpp"
 #include "cgcm/assembly/TpetraTypes.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 
@@ -43,5 +44,13 @@ class DofMap {
   Teuchos::RCP<const Map> ownedMap_, overlapMap_;
   Teuchos::RCP<const Import> importer_;
 };
+
+/// The rigid-body motions of the reference configuration on the owned dofs:
+/// the near-null space of the elasticity operator that smoothed aggregation
+/// needs to build good coarse spaces. 3D: three translations and three
+/// rotations; plane strain: two translations and the in-plane rotation.
+/// Axisymmetric: null (only the axial translation is rigid; MueLu's default
+/// of one unit vector per component is then as good).
+Teuchos::RCP<MultiVector> rigidBodyModes(const DofMap& dofs, const mesh::Mesh& mesh, Formulation formulation);
 
 }  // namespace cgcm::assembly

@@ -31,7 +31,7 @@ struct AssemblyTimings {
   double jacobian = 0.0;     ///< residual + tangent evaluations of the bulk (incl. fill)
   double interaction = 0.0;  ///< interaction: coordinate gather, search, kernel, scatter
   double search = 0.0;       ///< the part of `interaction` in the closest-point search (trees and queries)
-  double graph = 0.0;        ///< interaction couplings of the matrix graph (checked once per solve) and its fills
+  double graph = 0.0;        ///< the matrix graph: its interaction couplings (checked once per solve) and builds
 };
 
 /// An interaction tangent entry fell outside the matrix graph (the set of

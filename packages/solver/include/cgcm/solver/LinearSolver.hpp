@@ -10,6 +10,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
+#include "cgcm/assembly/TpetraTypes.hpp"
 #include "cgcm/core/Types.hpp"
 
 namespace cgcm::solver {
@@ -18,12 +19,15 @@ namespace cgcm::solver {
 Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters();
 
 /// The Stratimikos parameter list the settings stand for on `numRanks` ranks.
-/// Throws InputError for a direct solver on more than one rank.
-Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList& settings, int numRanks,
-                                                          int dofsPerNode);
+/// Throws InputError for a direct solver on more than one rank. MueLu gets
+/// `nearNullSpace` (assembly::rigidBodyModes) when it is given.
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
+    const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
+    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace = Teuchos::null);
 
 /// Builds the solver factory from validated settings.
-Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(const Teuchos::ParameterList& settings,
-                                                                          int numRanks, int dofsPerNode);
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
+    const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
+    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace = Teuchos::null);
 
 }  // namespace cgcm::solver

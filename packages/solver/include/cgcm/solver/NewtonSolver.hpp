@@ -25,6 +25,12 @@ struct NewtonSettings {
   Real forceScale = 1.0;
   int maxIterations = 15;
   bool printIterations = false;
+  /// Relative tolerance of iterative linear solves ("Linear Solver/Tolerance");
+  /// NOX hands it to every solve, so it is set here, not only in Stratimikos.
+  Real linearTolerance = 1e-10;
+  /// "Linear Solver/Forcing Term" = Eisenstat-Walker: the linear tolerance
+  /// follows the residual's decrease (never below linearTolerance).
+  bool adaptiveLinearTolerance = false;
 
   /// The tolerance on |f|_2 in force units.
   Real tolerance() const { return residualTolerance * forceScale; }
@@ -33,6 +39,8 @@ struct NewtonSettings {
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
   /// Reads a validated "Newton" sublist (forceScale stays 1).
   static NewtonSettings fromParameters(const Teuchos::ParameterList& p);
+  /// Also reads the linear-solve controls of a validated "Linear Solver" sublist.
+  static NewtonSettings fromParameters(const Teuchos::ParameterList& newton, const Teuchos::ParameterList& linearSolver);
 };
 
 /// Pseudo-transient relaxation (PseudoTransientModel): the pseudo-time step
@@ -45,6 +53,16 @@ struct RelaxationSettings {
   /// Cap on the largest dof change per iteration (length units; 0: none).
   Real maxIncrement = 0.0;
   int maxIterations = 400;
+};
+
+/// Linear solves and their Krylov iterations (0 for direct solvers), summed.
+struct LinearSolveCount {
+  long solves = 0;
+  long iterations = 0;
+  LinearSolveCount& operator+=(const LinearSolveCount& o) {
+    solves += o.solves, iterations += o.iterations;
+    return *this;
+  }
 };
 
 struct NewtonResult {
@@ -71,6 +89,9 @@ class NewtonSolver {
   /// Evaluation errors (inverted cells, touching surfaces, linear solver
   /// breakdowns) end the solve as a failure with their message. Collective.
   NewtonResult solve(Vector& u);
+
+  /// Linear solves of every solve() and relax() so far, failed ones included.
+  const LinearSolveCount& linearSolves() const { return linearSolves_; }
 
   /// Relaxes u to an equilibrium at the model's current parameters by
   /// pseudo-transient continuation: an overdamped descent that ends with
@@ -99,7 +120,12 @@ class NewtonSolver {
   Teuchos::RCP<NOX::Thyra::Group> group_;
   Teuchos::RCP<Teuchos::ParameterList> noxParams_;
   Teuchos::RCP<Vector> lastIterate_;  ///< iterate at which the graph was found outdated
+  LinearSolveCount linearSolves_;
 };
+
+/// Puts the linear-solve tolerance of `settings` into NOX's "Direction/Newton"
+/// sublist, with the Eisenstat-Walker forcing term when `adaptive`.
+void setLinearSolveControls(const NewtonSettings& settings, bool adaptive, Teuchos::ParameterList& newtonDirection);
 
 /// Wall time the problem has spent in evaluations so far.
 double evaluationSeconds(const assembly::Problem& a);
