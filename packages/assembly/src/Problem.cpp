@@ -62,11 +62,11 @@ Teuchos::RCP<Matrix> Problem::createMatrix() { return Teuchos::rcp(new Matrix(gr
 void Problem::buildGraph() {
   const auto t0 = Clock::now();
   // Node by node: the nodes each overlap node couples with (its cells' nodes and its interaction
-  // partners), then one insertion per row. Inserting cell by cell and pair by pair cost 2-3 s per build
-  // of a 27k-unknown tetrahedral graph, most of it in Tpetra's per-call overhead.
+  // partners), then one insertion per row. Inserting cell by cell and pair by pair, into rows all as long
+  // as the longest, cost 2-3 s per build of a 27k-unknown tetrahedral graph (doc/performance.md).
   const Map& overlap = *dofs_->overlapMap();
   const std::size_t numOverlapNodes = overlap.getNodeNumElements() / dim_;
-  std::vector<std::vector<LocalIndex>> neighbours(numOverlapNodes);  // overlap node indices
+  std::vector<std::vector<LocalIndex>> neighbours(numOverlapNodes);  // overlap node indices, repeated
   for (const auto& part : bulk_) part.appendCellNeighbours(neighbours);
   std::vector<std::vector<LocalIndex>> partners(numOverlapNodes);  // mesh node ids
   for (const auto& [r, c] : extraCouplings_) {
@@ -75,23 +75,34 @@ void Problem::buildGraph() {
       throw std::logic_error("interaction coupling row node " + std::to_string(r) + " is not on this rank");
     partners[row / dim_].push_back(c);
   }
-  // Row lengths: an upper bound that also holds the entries other ranks add to shared rows: every cell of
-  // the mesh at the node (each rank holds the whole mesh) and every rank's interaction partners. (One
-  // uniform bound for all rows made 3D graphs allocate and clear several times the memory they fill.)
+  // Row lengths: this rank's couplings exactly, plus a bound on what other ranks add to a shared row at the
+  // end of assembly: the nodes of their cells at the node (each rank holds the whole mesh) and their
+  // interaction partners of it.
   const LocalIndex numNodes = mesh_->numNodes();
-  std::vector<long long> bound(numNodes, 0), extraHere(numNodes, 0), extra(numNodes, 0);
+  std::vector<long long> cellNodes(numNodes, 0), extraHere(numNodes, 0), extra(numNodes, 0);
   for (const auto& block : mesh_->blocks) {
     const int npc = mesh::nodesPerCell(block.type);
-    for (LocalIndex n : block.connectivity) bound[n] += npc;
+    for (LocalIndex n : block.connectivity) cellNodes[n] += npc;
   }
   for (const auto& [r, c] : extraCouplings_) ++extraHere[r];
   Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, int(numNodes), extraHere.data(), extra.data());
   Kokkos::DualView<std::size_t*, Graph::device_type> rowLengths("rowLengths", overlap.getNodeNumElements());
+  std::vector<std::vector<GlobalIndex>> columns(numOverlapNodes);
   {
     auto lengths = rowLengths.view_host();
-    for (std::size_t lid = 0; lid < lengths.extent(0); ++lid) {
-      const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(lid)) / dim_);
-      lengths(lid) = std::size_t(std::min<long long>((bound[node] + extra[node]) * dim_, (long long)numNodes * dim_));
+    for (std::size_t k = 0; k < numOverlapNodes; ++k) {
+      auto& cols = columns[k];
+      for (LocalIndex m : neighbours[k])
+        for (int j = 0; j < dim_; ++j) cols.push_back(overlap.getGlobalElement(LocalIndex(m * dim_ + j)));
+      for (LocalIndex c : partners[k])
+        for (int j = 0; j < dim_; ++j) cols.push_back(dofs_->dof(c, j));
+      std::sort(cols.begin(), cols.end());
+      cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+      const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(k * dim_)) / dim_);
+      const long long remote = (cellNodes[node] - (long long)neighbours[k].size()) + (extra[node] - extraHere[node]);
+      const auto length =
+          std::size_t(std::min<long long>((long long)cols.size() + remote * dim_, (long long)numNodes * dim_));
+      for (int i = 0; i < dim_; ++i) lengths(k * dim_ + i) = length;
     }
     rowLengths.modify_host();
     rowLengths.sync_device();
@@ -99,16 +110,9 @@ void Problem::buildGraph() {
   graph_ = Teuchos::rcp(new Graph(dofs_->ownedMap(), dofs_->overlapMap(),
                                   Kokkos::DualView<const std::size_t*, Graph::device_type>(rowLengths)));
   Tpetra::beginAssembly(*graph_);
-  std::vector<GlobalIndex> cols;
   for (std::size_t k = 0; k < numOverlapNodes; ++k) {
-    cols.clear();
-    for (LocalIndex m : neighbours[k])
-      for (int j = 0; j < dim_; ++j) cols.push_back(overlap.getGlobalElement(LocalIndex(m * dim_ + j)));
-    for (LocalIndex c : partners[k])
-      for (int j = 0; j < dim_; ++j) cols.push_back(dofs_->dof(c, j));
+    const auto& cols = columns[k];
     if (cols.empty()) continue;
-    std::sort(cols.begin(), cols.end());
-    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
     for (int i = 0; i < dim_; ++i)
       graph_->insertGlobalIndices(overlap.getGlobalElement(LocalIndex(k * dim_ + i)), LocalIndex(cols.size()),
                                   cols.data());
