@@ -99,7 +99,8 @@ void Problem::buildGraph() {
       std::sort(cols.begin(), cols.end());
       cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
       const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(k * dim_)) / dim_);
-      const long long remote = (cellNodes[node] - (long long)neighbours[k].size()) + (extra[node] - extraHere[node]);
+      const long long remote =
+          std::max(0LL, cellNodes[node] - (long long)neighbours[k].size()) + (extra[node] - extraHere[node]);
       const auto length =
           std::size_t(std::min<long long>((long long)cols.size() + remote * dim_, (long long)numNodes * dim_));
       for (int i = 0; i < dim_; ++i) lengths(k * dim_ + i) = length;
