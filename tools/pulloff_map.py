@@ -45,24 +45,24 @@ def exe():
     return os.path.join(BUILD, "bin", "cgcm-analytic")
 
 
-def analytic(build, *args):
-    return rows(os.path.join(build, "bin", "cgcm-analytic"), *args)
+def analytic(*args):
+    return rows(exe(), *args)
 
 
 def gamma_w_for(gl, mu):
     """gammaW giving Tabor mu at gammaL (mu is proportional to (gammaL/gammaW^2)^(1/3))."""
-    mu1 = float(analytic(BUILD, "map", "--gammaL", f"{gl:g}", "--gammaW", "1", "--nu", f"{NU}")[0]["mu_tabor"])
+    mu1 = float(analytic("map", "--gammaL", f"{gl:g}", "--gammaW", "1", "--nu", f"{NU}")[0]["mu_tabor"])
     return (mu1 / mu) ** 1.5
 
 
 def plan(gl, mu, max_level):
     """Deck overrides and scales of one case."""
     gw = gamma_w_for(gl, mu)
-    m = {k: float(v) for k, v in analytic(BUILD, "map", "--gammaL", f"{gl:.12g}", "--gammaW", f"{gw:.12g}",
+    m = {k: float(v) for k, v in analytic("map", "--gammaL", f"{gl:.12g}", "--gammaW", f"{gw:.12g}",
                                           "--nu", f"{NU}")[0].items()}
     lam = m["lambda_theory"]
-    pull = {r["control"]: r for r in analytic(BUILD, "pulloff", "--model", "md", "--lambda", f"{lam:.8g}")}
-    curve = analytic(BUILD, "curve", "--model", "md", "--lambda", f"{lam:.8g}", "--a-max", "4", "--points", "800")
+    pull = {r["control"]: r for r in analytic("pulloff", "--model", "md", "--lambda", f"{lam:.8g}")}
+    curve = analytic("curve", "--model", "md", "--lambda", f"{lam:.8g}", "--a-max", "4", "--points", "800")
     zero = next(r for r in curve if float(r["P"]) >= 0.0)  # the zero-load state of the loading branch
     r0 = 1.0 / gl
     rs0 = r0 / 15 ** (1 / 6)

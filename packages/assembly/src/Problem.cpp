@@ -59,15 +59,36 @@ Teuchos::RCP<const Graph> Problem::graph() {
 
 Teuchos::RCP<Matrix> Problem::createMatrix() { return Teuchos::rcp(new Matrix(graph())); }
 
-void Problem::buildGraph() {
-  const auto t0 = Clock::now();
-  // Node by node: the nodes each overlap node couples with (its cells' nodes and its interaction
-  // partners), then one insertion per row. Inserting cell by cell and pair by pair, into rows all as long
-  // as the longest, cost 2-3 s per build of a 27k-unknown tetrahedral graph (doc/performance.md).
+void Problem::findCellNeighbours() {
   const Map& overlap = *dofs_->overlapMap();
   const std::size_t numOverlapNodes = overlap.getNodeNumElements() / dim_;
-  std::vector<std::vector<LocalIndex>> neighbours(numOverlapNodes);  // overlap node indices, repeated
-  for (const auto& part : bulk_) part.appendCellNeighbours(neighbours);
+  cellNeighbours_.assign(numOverlapNodes, {});
+  for (const auto& part : bulk_) part.appendCellNeighbours(cellNeighbours_);
+  // Other ranks' cells at a shared node add at most the nodes of every mesh cell there (each rank holds the
+  // whole mesh) less those of this rank's cells.
+  std::vector<long long> cellNodes(mesh_->numNodes(), 0);
+  for (const auto& block : mesh_->blocks) {
+    const int npc = mesh::nodesPerCell(block.type);
+    for (LocalIndex n : block.connectivity) cellNodes[n] += npc;
+  }
+  remoteCellNodes_.assign(numOverlapNodes, 0);
+  for (std::size_t k = 0; k < numOverlapNodes; ++k) {
+    auto& list = cellNeighbours_[k];
+    const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(k * dim_)) / dim_);
+    remoteCellNodes_[k] = std::max(0LL, cellNodes[node] - (long long)list.size());
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+}
+
+void Problem::buildGraph() {
+  const auto t0 = Clock::now();
+  // Node by node: the nodes each overlap node couples with (its cells' nodes, found once, and its
+  // interaction partners), then one insertion per row. Inserting cell by cell and pair by pair, into rows
+  // all as long as the longest, cost 2-3 s per build of a 27k-unknown tetrahedral graph (doc/performance.md).
+  if (cellNeighbours_.empty()) findCellNeighbours();
+  const Map& overlap = *dofs_->overlapMap();
+  const std::size_t numOverlapNodes = cellNeighbours_.size();
   std::vector<std::vector<LocalIndex>> partners(numOverlapNodes);  // mesh node ids
   for (const auto& [r, c] : extraCouplings_) {
     const LocalIndex row = overlap.getLocalElement(dofs_->dof(r, 0));
@@ -76,14 +97,9 @@ void Problem::buildGraph() {
     partners[row / dim_].push_back(c);
   }
   // Row lengths: this rank's couplings exactly, plus a bound on what other ranks add to a shared row at the
-  // end of assembly: the nodes of their cells at the node (each rank holds the whole mesh) and their
-  // interaction partners of it.
+  // end of assembly: their cells' nodes and their interaction partners of the node.
   const LocalIndex numNodes = mesh_->numNodes();
-  std::vector<long long> cellNodes(numNodes, 0), extraHere(numNodes, 0), extra(numNodes, 0);
-  for (const auto& block : mesh_->blocks) {
-    const int npc = mesh::nodesPerCell(block.type);
-    for (LocalIndex n : block.connectivity) cellNodes[n] += npc;
-  }
+  std::vector<long long> extraHere(numNodes, 0), extra(numNodes, 0);
   for (const auto& [r, c] : extraCouplings_) ++extraHere[r];
   Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, int(numNodes), extraHere.data(), extra.data());
   Kokkos::DualView<std::size_t*, Graph::device_type> rowLengths("rowLengths", overlap.getNodeNumElements());
@@ -92,15 +108,15 @@ void Problem::buildGraph() {
     auto lengths = rowLengths.view_host();
     for (std::size_t k = 0; k < numOverlapNodes; ++k) {
       auto& cols = columns[k];
-      for (LocalIndex m : neighbours[k])
+      cols.reserve((cellNeighbours_[k].size() + partners[k].size()) * dim_);
+      for (LocalIndex m : cellNeighbours_[k])
         for (int j = 0; j < dim_; ++j) cols.push_back(overlap.getGlobalElement(LocalIndex(m * dim_ + j)));
       for (LocalIndex c : partners[k])
         for (int j = 0; j < dim_; ++j) cols.push_back(dofs_->dof(c, j));
       std::sort(cols.begin(), cols.end());
       cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
       const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(k * dim_)) / dim_);
-      const long long remote =
-          std::max(0LL, cellNodes[node] - (long long)neighbours[k].size()) + (extra[node] - extraHere[node]);
+      const long long remote = remoteCellNodes_[k] + (extra[node] - extraHere[node]);
       const auto length =
           std::size_t(std::min<long long>((long long)cols.size() + remote * dim_, (long long)numNodes * dim_));
       for (int i = 0; i < dim_; ++i) lengths(k * dim_ + i) = length;

@@ -94,18 +94,13 @@ Teuchos::RCP<const Teuchos::ParameterList> NewtonSettings::validParameters() {
   return valid;
 }
 
-NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& p) {
-  NewtonSettings s;
-  s.lineSearch = p.get<std::string>("Line Search") == "backtrack" ? LineSearch::Backtrack : LineSearch::FullStep;
-  s.residualTolerance = p.get<double>("Residual Tolerance");
-  s.maxIterations = p.get<int>("Max Iterations");
-  s.printIterations = p.get<bool>("Print Iterations");
-  return s;
-}
-
 NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& newton,
                                               const Teuchos::ParameterList& linearSolver) {
-  NewtonSettings s = fromParameters(newton);
+  NewtonSettings s;
+  s.lineSearch = newton.get<std::string>("Line Search") == "backtrack" ? LineSearch::Backtrack : LineSearch::FullStep;
+  s.residualTolerance = newton.get<double>("Residual Tolerance");
+  s.maxIterations = newton.get<int>("Max Iterations");
+  s.printIterations = newton.get<bool>("Print Iterations");
   s.linearTolerance = linearSolver.get<double>("Tolerance");
   s.adaptiveLinearTolerance = linearSolver.get<std::string>("Forcing Term") == "Eisenstat-Walker";
   return s;

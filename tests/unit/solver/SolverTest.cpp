@@ -393,7 +393,8 @@ TEST(Newton, BacktrackingLineSearchConverges) {
   System sys(*d);
   auto& model = sys.model;
   auto& bc = sys.dirichlet;
-  auto settings = solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton"));
+  auto settings = solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton"),
+                                                          d->sublist("Solver").sublist("Linear Solver"));
   settings.residualTolerance = 1e-12;
   solver::NewtonSolver newton(model, settings);
   assembly::Vector u(model->map());
@@ -421,7 +422,8 @@ TEST(Newton, AnUnconvergedLinearSolveIsNamedInTheFailure) {
                  "Solver/Linear Solver/Type=Belos GMRES + Ifpack2", "Solver/Linear Solver/Max Iterations=2",
                  "Solver/Linear Solver/Tolerance=1e-12"});
   System sys(*d);
-  auto settings = solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton"));
+  auto settings = solver::NewtonSettings::fromParameters(d->sublist("Solver").sublist("Newton"),
+                                                          d->sublist("Solver").sublist("Linear Solver"));
   settings.maxIterations = 4;
   const auto r = solveFromRest(sys, settings, -0.2);
   ASSERT_FALSE(r.converged);

@@ -125,6 +125,7 @@ class Problem {
 
  private:
   void buildGraph();
+  void findCellNeighbours();
   /// The interaction couplings at u within `radius` (timed as `graph`).
   std::vector<std::pair<LocalIndex, LocalIndex>> interactionCouplings(const Vector& u, Real radius);
   /// Whether the graph holds `wanted` on every rank (collective).
@@ -138,6 +139,11 @@ class Problem {
   std::unique_ptr<InteractionPart> interactionPart_;  ///< null without interaction
 
   std::vector<std::pair<LocalIndex, LocalIndex>> extraCouplings_;
+  /// The part of the graph fixed with the mesh, found at the first build: per
+  /// overlap node, the overlap nodes it shares one of this rank's cells with
+  /// (sorted, unique), and a bound on the nodes other ranks' cells add to it.
+  std::vector<std::vector<LocalIndex>> cellNeighbours_;
+  std::vector<long long> remoteCellNodes_;
   Teuchos::RCP<Graph> graph_;
   int graphVersion_ = 0;  ///< incremented on every rebuild: cached column ids follow it
   int columnsVersion_ = -1;

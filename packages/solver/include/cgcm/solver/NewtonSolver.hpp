@@ -37,9 +37,7 @@ struct NewtonSettings {
 
   /// Valid parameters of the "Newton" sublist, with defaults and documentation.
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
-  /// Reads a validated "Newton" sublist (forceScale stays 1).
-  static NewtonSettings fromParameters(const Teuchos::ParameterList& p);
-  /// Also reads the linear-solve controls of a validated "Linear Solver" sublist.
+  /// Reads validated "Newton" and "Linear Solver" sublists (forceScale stays 1).
   static NewtonSettings fromParameters(const Teuchos::ParameterList& newton, const Teuchos::ParameterList& linearSolver);
 };
 
