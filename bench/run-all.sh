@@ -19,6 +19,8 @@ echo "== the linear solvers on the default deck, mesh levels 0 and 1"
 bash bench/linear_solvers.sh "$build" 0 1
 echo "== the 3D iterative solver: near-null space, forcing term (GMRES + MueLu)"
 bash bench/iterative_solvers_3d.sh "$build"
+echo "== two ranks against one: the machine's ceiling, the box, the 3D sphere per partition"
+bash bench/parallel_efficiency.sh "$build"
 echo "== Method 3 kernel and search, per pair"
 "$build/bin/bench_interaction_kernel"
 echo "== closest-point search: AABB build and queries per Newton iteration"

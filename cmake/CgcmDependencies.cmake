@@ -4,7 +4,7 @@
 find_package(MPI REQUIRED COMPONENTS CXX)
 
 find_package(Trilinos 13.2 REQUIRED COMPONENTS
-  Teuchos Kokkos Tpetra Thyra ThyraTpetraAdapters NOX Stratimikos Belos Ifpack2 Amesos2 MueLu)
+  Teuchos Kokkos Tpetra Thyra ThyraTpetraAdapters NOX Stratimikos Belos Ifpack2 Amesos2 MueLu Zoltan2)
 
 # Kokkos core only: what the physics kernels may see (KOKKOS_INLINE_FUNCTION, Kokkos::View).
 add_library(cgcm_kokkos INTERFACE)

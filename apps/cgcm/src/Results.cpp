@@ -90,11 +90,12 @@ ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc
 }
 
 void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
+  const std::vector<Real> force = disc_.interaction ? interactionNodeForces(x) : std::vector<Real>{};
   const std::vector<Real> u = gather_.gather(x);  // dof = node * dim + i
   if (!root_) return;
   io::ExodusWriter::Fields nodal, element;
   displacementAndStress(u, nodal, element);
-  if (disc_.interaction) traction(u, nodal);
+  if (disc_.interaction) traction(u, force, nodal);
   io::ExodusWriter::Scalars scalars;
   for (std::size_t k = 0; k < globals_.size(); ++k) scalars[globals_[k]] = globals[k];
   writer_->writeStep(writer_->numSteps() + 1, nodal, element, scalars);
@@ -140,21 +141,31 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
   }
 }
 
-void ResultsWriter::traction(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal) const {
-  // The pair list is the one of the last evaluation, at this state.
+std::vector<Real> ResultsWriter::interactionNodeForces(const assembly::Vector& x) const {
+  // Each rank holds the pairs of its own facets, from the last evaluation, at this state.
+  const auto& in = *disc_.interaction;
+  const int d = in.dim();
+  const std::vector<Real>& coords = disc_.problem->currentCoordinates(x);  // every surface node
+  std::vector<Real> local(d * std::size_t(disc_.problem->mesh().numNodes()), 0.0), force(local.size(), 0.0);
+  interaction::PairContribution c;
+  for (const auto& p : in.pairs()) {
+    in.evaluatePair(coords.data(), p, c, false);
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < d; ++i) local[d * std::size_t(c.rowNodes[a]) + i] -= c.f[d * a + i];  // on the body: -f_C
+  }
+  Teuchos::reduce(local.data(), force.data(), int(local.size()), Teuchos::REDUCE_SUM, 0, *disc_.dofs->comm());
+  return force;
+}
+
+void ResultsWriter::traction(const std::vector<Real>& u, const std::vector<Real>& force,
+                             io::ExodusWriter::Fields& nodal) const {
   const auto& mesh = disc_.problem->mesh();
   const auto& in = *disc_.interaction;
   const int d = in.dim();
   const LocalIndex nn = mesh.numNodes();
   std::vector<Real> x(mesh.coords);
   for (std::size_t k = 0; k < x.size(); ++k) x[k] += u[k];
-  std::vector<Real> force(d * std::size_t(nn), 0.0), area(nn, 0.0), normal(d * std::size_t(nn), 0.0);
-  interaction::PairContribution c;
-  for (const auto& p : in.pairs()) {
-    in.evaluatePair(x.data(), p, c, false);
-    for (int a = 0; a < c.numRowNodes; ++a)
-      for (int i = 0; i < d; ++i) force[d * std::size_t(c.rowNodes[a]) + i] -= c.f[d * a + i];  // on the body: -f_C
-  }
+  std::vector<Real> area(nn, 0.0), normal(d * std::size_t(nn), 0.0);
   const bool axisymmetric = disc_.problem->formulation() == assembly::Formulation::Axisymmetric;
   for (int b = 0; b < in.numBodies(); ++b) {
     const auto& s = in.surface(b);

@@ -236,6 +236,11 @@ RCP<const ParameterList> validParameters() {
       .disableRecursiveValidation();
 
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");
+  solverList.set("Partition", "geometric",
+                 "how cells are split over MPI ranks: \"geometric\" (Zoltan2 multi-jagged cuts of the cell "
+                 "centroids: compact parts, short interfaces) or \"contiguous\" (ranges of the mesh's cell "
+                 "numbering); no effect on one rank",
+                 choices({"geometric", "contiguous"}));
   solverList.sublist("Newton", false, "Newton's method (NOX) at each load step and in every continuation corrector")
       .setParameters(*solver::NewtonSettings::validParameters());
   solverList.sublist("Linear Solver", false, "linear solves inside Newton (Stratimikos)")
@@ -765,6 +770,7 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   ProblemSetup s;
   s.formulation = parseFormulation(deck.sublist("Problem").get<std::string>("Formulation"));
   s.material = materialFrom(deck.sublist("Material"));
+  s.partition = assembly::parseCellPartition(deck.sublist("Solver").get<std::string>("Partition"));
   if (s.material.kinematics == material::Kinematics::SmallStrain)
     s.report.push_back("Material/Kinematics = small strain: linear elasticity on the reference configuration");
 
@@ -872,7 +878,8 @@ Discretization discretize(const Teuchos::RCP<assembly::DofMap>& dofs, const Prob
 
 Teuchos::RCP<assembly::DofMap> distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                                           const ProblemSetup& setup) {
-  return Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation)));
+  return Teuchos::rcp(
+      new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation), setup.partition));
 }
 
 }  // namespace

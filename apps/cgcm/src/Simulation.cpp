@@ -10,6 +10,8 @@
 #include <optional>
 #include <sstream>
 
+#include <sys/resource.h>
+
 #include <Teuchos_CommHelpers.hpp>
 
 #include "cgcm/app/Checkpoint.hpp"
@@ -325,6 +327,15 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const auto graph = problem->graph();  // collective only when it has to be built
   result.matrixRows = graph->getGlobalNumRows();
   result.matrixEntries = graph->getGlobalNumEntries();
+  {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);  // ru_maxrss in KiB on Linux
+    const Teuchos::Comm<int>& comm = *disc.dofs->comm();
+    std::vector<double> mine(comm.getSize(), 0.0);
+    mine[comm.getRank()] = double(usage.ru_maxrss) / 1024.0;
+    result.peakMemoryMB.assign(mine.size(), 0.0);
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(mine.size()), mine.data(), result.peakMemoryMB.data());
+  }
   const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
   result.interactionSeconds = t.interaction - timingsBefore.interaction;

@@ -71,6 +71,14 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
                 result.graphSeconds,
                 result.pathSeconds - result.assemblySeconds - result.interactionSeconds - result.graphSeconds);
   both(buf);
+  if (!result.peakMemoryMB.empty()) {
+    std::string line = "peak memory per rank:";
+    for (std::size_t r = 0; r < result.peakMemoryMB.size(); ++r) {
+      std::snprintf(buf, sizeof buf, "%s %.0f MB", r == 0 ? "" : ",", result.peakMemoryMB[r]);
+      line += buf;
+    }
+    both((line + "\n").c_str());
+  }
   if (!result.volumePairs.empty()) both((result.volumePairs + "\n").c_str());
 }
 

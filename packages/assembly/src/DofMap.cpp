@@ -1,23 +1,77 @@
 #include "cgcm/assembly/DofMap.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+#include <Zoltan2_BasicVectorAdapter.hpp>
+#include <Zoltan2_PartitioningProblem.hpp>
+
 #include <algorithm>
 #include <set>
 
+#include "cgcm/core/Error.hpp"
+
 namespace cgcm::assembly {
 
-int DofMap::cellOwner(LocalIndex cell) const {
-  // inverse of the contiguous split below: first rank r with cell < begin(r + 1)
-  const int p = comm_->getSize();
-  for (int r = 0; r < p; ++r)
-    if (cell < LocalIndex((long long)numCells_ * (r + 1) / p)) return r;
-  return p - 1;
+CellPartition parseCellPartition(const std::string& name) {
+  if (name == "geometric") return CellPartition::Geometric;
+  if (name == "contiguous") return CellPartition::Contiguous;
+  throw InputError("Solver/Partition = \"" + name + "\": allowed values are \"geometric\" and \"contiguous\"");
 }
 
-DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode)
-    : comm_(comm), dofsPerNode_(dofsPerNode), numCells_(mesh.numCells()) {
+namespace {
+
+// The rank of every mesh-wide cell, the same on every rank.
+std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition) {
+  const int rank = comm.getRank(), p = comm.getSize();
+  const LocalIndex numCells = mesh.numCells();
+  auto first = [&](int r) { return LocalIndex((long long)numCells * r / p); };
+  std::vector<int> owner(numCells, 0);
+  if (p == 1) return owner;
+  if (partition == CellPartition::Contiguous) {
+    for (int r = 0; r < p; ++r)
+      for (LocalIndex c = first(r); c < first(r + 1); ++c) owner[c] = r;
+    return owner;
+  }
+  // Each rank hands Zoltan2 the centroids of a contiguous share; the parts come back per share and are
+  // summed into the mesh-wide list (every rank holds the whole mesh).
+  const int dim = mesh.dim;
+  std::vector<GlobalIndex> ids;
+  std::vector<Real> centroids[3], weights;
+  LocalIndex cell = 0;
+  for (const auto& block : mesh.blocks) {
+    const int npc = mesh::nodesPerCell(block.type);
+    for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
+      if (cell < first(rank) || cell >= first(rank + 1)) continue;
+      ids.push_back(cell);
+      for (int i = 0; i < dim; ++i) {
+        Real x = 0.0;
+        for (int a = 0; a < npc; ++a) x += mesh.coords[std::size_t(dim) * block.connectivity[std::size_t(c) * npc + a] + i];
+        centroids[i].push_back(x / npc);
+      }
+      weights.push_back(Real(dim * npc) * Real(dim * npc));  // tangent entries: the assembly work
+    }
+  }
+  using Adapter = Zoltan2::BasicVectorAdapter<Zoltan2::BasicUserTypes<Real, LocalIndex, GlobalIndex>>;
+  Adapter adapter(LocalIndex(ids.size()), ids.data(), centroids[0].data(), centroids[1].data(),
+                  dim == 3 ? centroids[2].data() : nullptr, 1, 1, 1, true, weights.data(), 1);
+  Teuchos::ParameterList params;
+  params.set("algorithm", "multijagged");
+  params.set("num_global_parts", p);
+  params.set("imbalance_tolerance", 1.02);
+  Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &params, Teuchos::rcpFromRef(comm));
+  problem.solve();
+  const auto* parts = problem.getSolution().getPartListView();
+  std::vector<int> mine(numCells, 0);
+  for (std::size_t k = 0; k < ids.size(); ++k) mine[ids[k]] = int(parts[k]);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(numCells), mine.data(), owner.data());
+  return owner;
+}
+
+}  // namespace
+
+DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode,
+               CellPartition partition)
+    : comm_(comm), dofsPerNode_(dofsPerNode), cellOwner_(partitionCells(*comm, mesh, partition)) {
   const int rank = comm->getRank(), p = comm->getSize();
-  const LocalIndex begin = LocalIndex((long long)numCells_ * rank / p);
-  const LocalIndex end = LocalIndex((long long)numCells_ * (rank + 1) / p);
 
   nodeOwner_.assign(mesh.numNodes(), p);
   localCells_.resize(mesh.blocks.size());
@@ -27,13 +81,13 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
     const auto& blk = mesh.blocks[b];
     const int npc = mesh::nodesPerCell(blk.type);
     for (LocalIndex c = 0; c < blk.numCells(); ++c, ++cell) {
-      const int owner = cellOwner(cell);
+      const int owner = cellOwner_[cell];
       for (int a = 0; a < npc; ++a) {
         const LocalIndex n = blk.connectivity[std::size_t(c) * npc + a];
         nodeOwner_[n] = std::min(nodeOwner_[n], owner);
         if (owner == rank) touched.insert(n);
       }
-      if (cell >= begin && cell < end) localCells_[b].push_back(c);
+      if (owner == rank) localCells_[b].push_back(c);
     }
   }
   // Nodes that belong to no cell would make the system singular.

@@ -37,6 +37,8 @@ SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, 
     ownsFacet_[b].resize(surf.numFacets());
     for (LocalIndex f = 0; f < surf.numFacets(); ++f) ownsFacet_[b][f] = dofs_->cellOwner(surf.facetCells[f]) == rank;
   }
+  // each rank searches and pairs only the points of its own facets (against every whole surface)
+  if (dofs_->comm()->getSize() > 1) interaction_->setEvaluatedFacets(ownsFacet_);
 }
 
 InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) {

@@ -296,7 +296,9 @@ void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit, FacetDo
   for (int k = 0; k < numBodies(); ++k) {
     const mesh::Surface& sk = surfaces_[k];
     const int npf = sk.nodesPerFacet;
+    const char* evaluated = evaluatedFacets_.empty() ? nullptr : evaluatedFacets_[k].data();
     for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
+      if (evaluated && !evaluated[e]) continue;
       const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
       if (dim_ == 3) {
         const auto& rule = facetRules_[k];
@@ -319,6 +321,17 @@ void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit, FacetDo
       facetDone(k, e);
     }
   }
+}
+
+void SurfaceInteraction::setEvaluatedFacets(std::vector<std::vector<char>> evaluated) {
+  if (!evaluated.empty()) {
+    bool fits = evaluated.size() == surfaces_.size();
+    for (std::size_t k = 0; fits && k < surfaces_.size(); ++k)
+      fits = evaluated[k].size() == std::size_t(surfaces_[k].numFacets());
+    if (!fits) throw InputError("surface interaction: evaluated facets need one flag per facet of every body");
+  }
+  evaluatedFacets_ = std::move(evaluated);
+  searchedCoords_.clear();  // the next updatePairs searches anew
 }
 
 void SurfaceInteraction::updatePairs(const Real* coords) {

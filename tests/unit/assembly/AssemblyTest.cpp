@@ -4,15 +4,18 @@
 // and the Problem as their sum.
 #include <gtest/gtest.h>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <random>
 #include <vector>
 
 #include "cgcm/assembly/Problem.hpp"
+#include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/mesh/Generators.hpp"
 
@@ -88,6 +91,73 @@ std::vector<Real> randomDisplacement(std::size_t n, Real amplitude, unsigned see
   std::vector<Real> u(n);
   for (Real& v : u) v = d(rng);
   return u;
+}
+
+// A 12^3 hexahedral box with its cells numbered at random, as a mesh generator
+// may number them: the geometric partition gives every cell one owner (the
+// same list on every rank), parts balanced to Zoltan2's 2 % and an interface
+// of about one plane of nodes; contiguous ranges of the shuffled numbering
+// share most nodes.
+TEST(DofMap, GeometricPartitionIsCompactAndBalanced) {
+  auto comm = Tpetra::getDefaultComm();
+  const int p = comm->getSize(), rank = comm->getRank();
+  mesh::BoxSpec spec;
+  spec.nx = spec.ny = spec.nz = 12;
+  auto m = std::make_shared<mesh::Mesh>(mesh::box(spec));
+  auto& conn = m->blocks[0].connectivity;
+  const LocalIndex numCells = m->numCells();
+  std::vector<LocalIndex> order(numCells);
+  for (LocalIndex c = 0; c < numCells; ++c) order[c] = c;
+  std::shuffle(order.begin(), order.end(), std::mt19937(5));
+  std::vector<LocalIndex> shuffled;
+  for (LocalIndex c : order) shuffled.insert(shuffled.end(), conn.begin() + 8 * c, conn.begin() + 8 * c + 8);
+  conn = shuffled;
+
+  // nodes touched by the cells of more than one rank
+  auto sharedNodes = [&](const DofMap& dofs) {
+    std::vector<int> first(m->numNodes(), -1);
+    int shared = 0;
+    std::vector<char> counted(m->numNodes(), 0);
+    for (LocalIndex c = 0; c < numCells; ++c)
+      for (int a = 0; a < 8; ++a) {
+        const LocalIndex n = conn[8 * c + a];
+        const int owner = dofs.cellOwner(c);
+        if (first[n] < 0) first[n] = owner;
+        else if (first[n] != owner && !counted[n]) counted[n] = 1, ++shared;
+      }
+    return shared;
+  };
+  DofMap geometric(comm, *m, 3), contiguous(comm, *m, 3, CellPartition::Contiguous);
+  std::vector<long long> perRank(p, 0);
+  long long ownerSum = 0;
+  for (LocalIndex c = 0; c < numCells; ++c) {
+    ASSERT_GE(geometric.cellOwner(c), 0);
+    ASSERT_LT(geometric.cellOwner(c), p);
+    ++perRank[geometric.cellOwner(c)];
+    ownerSum += geometric.cellOwner(c) * (c % 17 + 1);
+  }
+  long long minSum = 0, maxSum = 0;  // the same list on every rank
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, ownerSum, Teuchos::outArg(minSum));
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, ownerSum, Teuchos::outArg(maxSum));
+  EXPECT_EQ(minSum, maxSum);
+  EXPECT_EQ(LocalIndex(geometric.localCells(0).size()), perRank[rank]);
+  EXPECT_EQ(geometric.ownedMap()->getGlobalNumElements(), std::size_t(3 * m->numNodes()));
+  for (int r = 0; r < p; ++r) EXPECT_LE(perRank[r], 1.02 * numCells / p + 1) << "rank " << r;
+  if (p == 1) {
+    EXPECT_EQ(sharedNodes(geometric), 0);
+    return;
+  }
+  const int plane = 13 * 13;
+  EXPECT_LE(sharedNodes(geometric), 2 * plane);
+  EXPECT_GT(sharedNodes(contiguous), 5 * plane);
+  std::printf("[partition] %d ranks: shared nodes geometric %d, contiguous %d (one plane %d)\n", p,
+              sharedNodes(geometric), sharedNodes(contiguous), plane);
+}
+
+TEST(DofMap, PartitionNamesAreChecked) {
+  EXPECT_EQ(parseCellPartition("geometric"), CellPartition::Geometric);
+  EXPECT_EQ(parseCellPartition("contiguous"), CellPartition::Contiguous);
+  EXPECT_THROW(parseCellPartition("metis"), InputError);
 }
 
 TEST(BulkPart, TangentAndOneMaterialPerBody) {

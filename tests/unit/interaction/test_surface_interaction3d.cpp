@@ -297,3 +297,49 @@ TEST(SurfaceInteraction3D, RejectsSegmentsIn3D) {
   sc.surfaces[0].nodesPerFacet = 2;
   EXPECT_THROW(makeInteraction(sc), InputError);
 }
+
+// Two ranks' shares: the facets split in two complementary sets give, between
+// them, exactly the pairs, the residual and the graph couplings of all facets.
+TEST(SurfaceInteraction3D, ComplementaryFacetSharesAddUpToTheWhole) {
+  Scene sc = capOverFlat(false);
+  SurfaceInteraction whole = makeInteraction(sc);
+  whole.updatePairs(sc.coords);
+  const auto fWhole = residual(whole, sc.coords);
+  const auto cWhole = whole.couplings(sc.coords, 1.1 * whole.cutoff());
+  std::vector<Real> fSum(fWhole.size(), 0.0);
+  std::vector<std::pair<LocalIndex, LocalIndex>> cUnion;
+  std::size_t pairs = 0;
+  for (int share = 0; share < 2; ++share) {
+    SurfaceInteraction part = makeInteraction(sc);
+    std::vector<std::vector<char>> evaluated;
+    for (const auto& s : sc.surfaces) {
+      evaluated.emplace_back(s.numFacets());
+      for (LocalIndex f = 0; f < s.numFacets(); ++f) evaluated.back()[f] = char((f * 7 / 3) % 2 == share);
+    }
+    part.setEvaluatedFacets(evaluated);
+    part.updatePairs(sc.coords);
+    pairs += part.pairs().size();
+    for (const auto& p : part.pairs()) EXPECT_TRUE(evaluated[p.body][p.facet]);
+    const auto f = residual(part, sc.coords);
+    for (std::size_t i = 0; i < f.size(); ++i) fSum[i] += f[i];
+    const auto c = part.couplings(sc.coords, 1.1 * part.cutoff());
+    cUnion.insert(cUnion.end(), c.begin(), c.end());
+  }
+  EXPECT_EQ(pairs, whole.pairs().size());
+  Real fmax = 0.0, diff = 0.0;
+  for (std::size_t i = 0; i < fWhole.size(); ++i)
+    fmax = std::max(fmax, std::abs(fWhole[i])), diff = std::max(diff, std::abs(fWhole[i] - fSum[i]));
+  EXPECT_GT(fmax, 0.0);
+  EXPECT_LE(diff, 1e-13 * fmax);
+  std::sort(cUnion.begin(), cUnion.end());
+  cUnion.erase(std::unique(cUnion.begin(), cUnion.end()), cUnion.end());
+  EXPECT_EQ(cUnion, cWhole);
+}
+
+TEST(SurfaceInteraction3D, EvaluatedFacetsNeedOneFlagPerFacet) {
+  Scene sc = capOverFlat(false);
+  SurfaceInteraction si = makeInteraction(sc);
+  EXPECT_THROW(si.setEvaluatedFacets({std::vector<char>(sc.surfaces[0].numFacets(), 1)}), InputError);
+  EXPECT_THROW(si.setEvaluatedFacets({std::vector<char>(3, 1), std::vector<char>(sc.surfaces[1].numFacets(), 1)}),
+               InputError);
+}

@@ -46,7 +46,10 @@ class ResultsWriter {
  private:
   void displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
                              io::ExodusWriter::Fields& element) const;
-  void traction(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal) const;
+  /// On rank 0: the interaction force on every node (dim entries per node) at
+  /// the state x of the last evaluation, summed over the ranks' pairs. Collective.
+  std::vector<Real> interactionNodeForces(const assembly::Vector& x) const;
+  void traction(const std::vector<Real>& u, const std::vector<Real>& force, io::ExodusWriter::Fields& nodal) const;
 
   const Discretization& disc_;
   std::vector<std::string> globals_;

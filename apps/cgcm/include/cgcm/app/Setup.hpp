@@ -72,6 +72,7 @@ struct ProblemSetup {
   std::optional<InteractionSetup> interaction;
   std::optional<ContactGeometry> contact;
   std::vector<std::string> report;  ///< scales and derived parameters, printed at the start of a run
+  assembly::CellPartition partition = assembly::CellPartition::Geometric;  ///< Solver/Partition
   /// Force scale F_ref of the convergence test: the paper's force unit
   /// E0/R0 = Y R0^2 for contact (Y R0 per unit thickness in plane strain), Y
   /// times the loaded area for a block.

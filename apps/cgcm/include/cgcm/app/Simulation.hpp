@@ -42,6 +42,7 @@ struct RunResult {
   long linearSolves = 0;            ///< linear solves of Newton and relaxation (LOCA's not counted)
   long krylovIterations = 0;        ///< their Krylov iterations (0 with a direct solver)
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
+  std::vector<double> peakMemoryMB;                 ///< per rank: the process's peak resident memory
   std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
   std::size_t numNodes = 0, numCells = 0, numDofs = 0;  ///< the problem's size
 };

@@ -1,10 +1,14 @@
 #pragma once
 // Distribution of cells and degrees of freedom over MPI ranks.
 //
-// Cells are numbered mesh-wide (block after block) and split into contiguous
-// ranges, one per rank: each cell is evaluated by exactly one rank. A node is
-// owned by the lowest rank whose cells touch it. Degree of freedom (node n,
-// component i) has global index n * dofsPerNode + i.
+// Cells are numbered mesh-wide (block after block); each is evaluated by
+// exactly one rank. The partition is geometric by default (Zoltan2's
+// multi-jagged cuts of the cell centroids, weighted by the size of a cell's
+// tangent): compact parts with short interfaces, whatever order the mesh
+// generator numbered the cells in. Contiguous: ranges of the mesh-wide
+// numbering. A node is owned by the lowest rank whose cells touch it.
+// Degree of freedom (node n, component i) has global index n * dofsPerNode + i.
+#include <string>
 #include <vector>
 
 #include "cgcm/assembly/Formulation.hpp"
@@ -13,9 +17,14 @@
 
 namespace cgcm::assembly {
 
+enum class CellPartition { Geometric, Contiguous };
+/// "geometric" or "contiguous"; throws InputError otherwise.
+CellPartition parseCellPartition(const std::string& name);
+
 class DofMap {
  public:
-  DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode);
+  DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode,
+         CellPartition partition = CellPartition::Geometric);
 
   const Teuchos::RCP<const Comm>& comm() const { return comm_; }
   int dofsPerNode() const { return dofsPerNode_; }
@@ -28,7 +37,7 @@ class DofMap {
   /// Cells evaluated by this rank, per element block (block-local cell indices).
   const std::vector<LocalIndex>& localCells(std::size_t block) const { return localCells_[block]; }
   /// Rank that evaluates the mesh-wide cell `cell`.
-  int cellOwner(LocalIndex cell) const;
+  int cellOwner(LocalIndex cell) const { return cellOwner_[cell]; }
   bool ownsNode(LocalIndex node) const { return nodeOwner_[node] == comm_->getRank(); }
   int nodeOwner(LocalIndex node) const { return nodeOwner_[node]; }
   GlobalIndex dof(LocalIndex node, int component) const {
@@ -38,7 +47,7 @@ class DofMap {
  private:
   Teuchos::RCP<const Comm> comm_;
   int dofsPerNode_;
-  LocalIndex numCells_;
+  std::vector<int> cellOwner_;  ///< [mesh-wide cell]
   std::vector<int> nodeOwner_;
   std::vector<std::vector<LocalIndex>> localCells_;
   Teuchos::RCP<const Map> ownedMap_, overlapMap_;

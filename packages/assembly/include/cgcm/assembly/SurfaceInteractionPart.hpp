@@ -2,10 +2,12 @@
 // Method 3 (half-space point formulation) as the interaction part of the
 // discrete problem: gathers the current coordinates of every surface node on every
 // rank (surfaces are small next to volumes), runs the closest-point search
-// and the pair kernels of interaction::SurfaceInteraction, and scatters the
-// pairs this rank owns (those of facets of its cells) into the overlap rows.
-// It also lists the node couplings the matrix graph needs and sums the
-// interaction force on each body.
+// and the pair kernels of interaction::SurfaceInteraction for the points of
+// the facets this rank owns (those of its cells), against every whole
+// surface, and scatters them into the overlap rows. It also lists the node
+// couplings of those facets for the matrix graph and sums the interaction
+// force on each body. The interaction's pair list is therefore this rank's
+// share only.
 //
 // One part serves all bodies: each body's surface gets one AABB tree per
 // evaluation, shared by every pair of bodies, and pairs of bodies farther

@@ -227,6 +227,13 @@ class SurfaceInteraction {
   /// length scale; 0: closest segment only).
   Real projectionSmoothing() const { return smoothing_; }
 
+  /// Restricts the quadrature points searched by updatePairs and couplings to
+  /// the facets f of body k with evaluated[k][f] != 0 (e.g. the facets whose
+  /// cells this MPI rank owns: each rank then searches and pairs only its own
+  /// points, against every body's whole surface). Empty (the default): every
+  /// facet. Throws InputError unless there is one flag per facet of each body.
+  void setEvaluatedFacets(std::vector<std::vector<char>> evaluated);
+
   /// Rebuilds the search structures at `coords` (dim() entries per node,
   /// global node ids) and the pair list. Call once per evaluation: at the
   /// surface coordinates (and cutoff) of the last call it returns at once
@@ -340,8 +347,8 @@ class SurfaceInteraction {
   PairState evaluatePair3D(const P& potential, const Real* coords, const InteractionPair& p, PairContribution& out,
                            bool withTangent) const;
   /// Calls visit(body, facet, quadrature point, x) for every quadrature
-  /// point of every surface at `coords`, and facetDone(body, facet) after
-  /// the points of each facet.
+  /// point of every evaluated facet at `coords`, and facetDone(body, facet)
+  /// after the points of each facet.
   template <class Visit, class FacetDone>
   void forEachPoint(const Real* coords, Visit&& visit, FacetDone&& facetDone) const;
   std::size_t pointsPerFacet(int k) const { return dim_ == 3 ? facetRules_[k].size() : std::size_t(rule_.size()); }
@@ -373,6 +380,7 @@ class SurfaceInteraction {
   std::vector<LocalIndex> hints_;        ///< [point * numBodies + other body]: last projection's facet, or -1
   std::vector<std::vector<LocalIndex>> neighbours_;  ///< [body][2 s + end]: segment sharing that node, or -1
   std::vector<InteractionPair> pairs_;
+  std::vector<std::vector<char>> evaluatedFacets_;  ///< [body][facet], empty: all (setEvaluatedFacets)
   std::vector<LocalIndex> near_;                        ///< scratch of findTargets
   std::vector<std::pair<Real, LocalIndex>> candidates_;  ///< scratch of findTargets: (rho, segment)
   InteractionSummary summary_;
