@@ -46,7 +46,7 @@ KOKKOS_INLINE_FUNCTION void gatherCell(const LocalIndex c, const DofView& dofLid
 template <class Kernel>
 BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordView& Xref,
                   const BulkPart::ConstVectorView& u, const BulkPart::VectorView& f,
-                  const BulkPart::LocalMatrix* J, const material::NeoHookean& mat) {
+                  const BulkPart::LocalMatrix* J, bool sortedRows, const material::NeoHookean& mat) {
   constexpr int nn = Kernel::numNodes, dim = Kernel::dim, nd = Kernel::numDofs;
   const LocalIndex numCells = LocalIndex(dofLids.extent(0));
   int failures = 0;
@@ -65,7 +65,7 @@ BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, cons
           if (ok) {
             LocalIndex cols[nd];
             for (int k = 0; k < nd; ++k) cols[k] = colLids(c, k);
-            for (int r = 0; r < nd; ++r) K.sumIntoValues(dofLids(c, r), cols, nd, ke[r], false, true);
+            for (int r = 0; r < nd; ++r) K.sumIntoValues(dofLids(c, r), cols, nd, ke[r], sortedRows, true);
           }
         } else {
           ok = Kernel::residual(X, x, mat, fe);
@@ -150,23 +150,24 @@ void BulkPart::setColumnMap(const Map& columns) {
   }
 }
 
-BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const {
+BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J,
+                                          bool sortedRows) const {
   using namespace fem;
   CellFailures out;
   for (const auto& b : blocks_) {
     BlockFailures bf;
     switch (formulation_) {
       case Formulation::PlaneStrain:
-        bf = assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        bf = assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
         break;
       case Formulation::Axisymmetric:
-        bf = assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+        bf = assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
         break;
       case Formulation::ThreeD:
         if (b.type == mesh::CellType::Hex8)
-          bf = assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+          bf = assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
         else
-          bf = assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, material_);
+          bf = assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
         break;
     }
     if (bf.count > 0 && out.first.empty()) {

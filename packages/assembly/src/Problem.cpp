@@ -159,8 +159,9 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
     auto fv = fOverlap_->getLocalViewDevice(Tpetra::Access::ReadWrite);
     BulkPart::LocalMatrix lclJ;
     if (J) lclJ = J->getLocalMatrixDevice();
+    const bool sortedRows = J && J->getCrsGraph()->isSorted();
     for (const auto& part : bulk_) {
-      const auto cells = part.assemble(uv, fv, J ? &lclJ : nullptr);
+      const auto cells = part.assemble(uv, fv, J ? &lclJ : nullptr, sortedRows);
       failures += cells.count;
       if (firstInverted.empty()) firstInverted = cells.first;
     }

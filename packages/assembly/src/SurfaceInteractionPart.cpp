@@ -47,6 +47,7 @@ InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const
   interaction_->updatePairs(x.data());
   searchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Map& overlap = *dofs_->overlapMap();
+  const bool sortedRows = J && J->getCrsGraph()->isSorted();  // bisection in each row, not a scan
   Matrix::local_matrix_device_type lclJ;
   Teuchos::RCP<const Map> colMap;
   if (J) {
@@ -67,13 +68,13 @@ InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const
       for (int j = 0; j < dim_; ++j) cols[dim_ * b + j] = colMap->getLocalElement(dofs_->dof(c.colNodes[b], j));
     // sumIntoValues skips columns missing from the row and returns how many it found
     for (int r = 0; r < nrows; ++r) {
-      const int missing = ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], false, true);
+      const int missing = ncols - lclJ.sumIntoValues(rows[r], cols, ncols, c.K[r], sortedRows, true);
       if (missing == 0) continue;
       out.dropped += missing;
       if (!out.firstDropped.empty()) continue;
       const Real zero = 0.0;  // probe the columns one by one for the first that is missing
       for (int k = 0; k < ncols; ++k)
-        if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, false, true) == 0) {
+        if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, sortedRows, true) == 0) {
           out.firstDropped = "row node " + std::to_string(c.rowNodes[r / dim_]) + ", column node " +
                              std::to_string(c.colNodes[k / dim_]);
           break;

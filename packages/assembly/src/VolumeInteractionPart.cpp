@@ -45,6 +45,7 @@ InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const 
   interaction_->updatePairs(x.data());
   searchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int dim = dofs_->dofsPerNode();
+  const bool sortedRows = J && J->getCrsGraph()->isSorted();  // bisection in each row, not a scan
   Matrix::local_matrix_device_type lclJ;
   if (J) {
     lclJ = J->getLocalMatrixDevice();
@@ -81,12 +82,12 @@ InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const 
     int missing = 0;
     // sumIntoValues skips columns missing from the row and returns how many it found
     for (int r = 0; r < nr; ++r) {
-      const int m = nc - lclJ.sumIntoValues(rows[r], cols, nc, c.K[r], false, true);
+      const int m = nc - lclJ.sumIntoValues(rows[r], cols, nc, c.K[r], sortedRows, true);
       if (m == 0) continue;
       missing += m;
       const Real zero = 0.0;  // probe the columns one by one for the first that is missing
       for (int k = 0; k < nc; ++k)
-        if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, false, true) == 0) {
+        if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, sortedRows, true) == 0) {
           if (Kokkos::atomic_compare_exchange(&firstMissing(0), LocalIndex(0), c.rowNodes[r / dim] + 1) == 0)
             firstMissing(1) = c.colNodes[k / dim] + 1;
           break;

@@ -44,8 +44,10 @@ class BulkPart {
     std::string first;  ///< "cell 12 of block \"b\" (its first node 40 at X = (...))", empty if none
   };
   /// f += f_int of the cells, and J += their tangent if J is given (J's
-  /// column ids must be those of setColumnMap).
-  CellFailures assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J) const;
+  /// column ids must be those of setColumnMap). sortedRows: J's rows hold
+  /// their column ids in ascending order (Tpetra's after fillComplete), so
+  /// each entry is found by bisection instead of a scan of its row.
+  CellFailures assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J, bool sortedRows) const;
 
  private:
   struct Block {
