@@ -331,10 +331,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);  // ru_maxrss in KiB on Linux
     const Teuchos::Comm<int>& comm = *disc.dofs->comm();
-    std::vector<double> mine(comm.getSize(), 0.0);
-    mine[comm.getRank()] = double(usage.ru_maxrss) / 1024.0;
-    result.peakMemoryMB.assign(mine.size(), 0.0);
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(mine.size()), mine.data(), result.peakMemoryMB.data());
+    const double mine = double(usage.ru_maxrss) / 1024.0;
+    result.peakMemoryMB.assign(comm.getSize(), 0.0);
+    Teuchos::gatherAll(comm, 1, &mine, comm.getSize(), result.peakMemoryMB.data());
   }
   const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);

@@ -28,17 +28,18 @@ SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, 
   if (!(searchRadiusFactor > 1.0))
     throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +
                      ": the graph search radius must exceed the interaction cutoff (factor > 1)");
-  ownsFacet_.assign(interaction_->numBodies(), {});
+  // Each pair is evaluated by exactly one rank: the owner of its facet's cell searches and pairs the
+  // facet's points (against every whole surface); the pair list holds this rank's pairs only.
+  std::vector<std::vector<char>> ownsFacet(interaction_->numBodies());
   const int rank = dofs_->comm()->getRank();
   for (int b = 0; b < interaction_->numBodies(); ++b) {
     const auto& surf = interaction_->surface(b);
     if (surf.facetCells.size() != std::size_t(surf.numFacets()))
       throw std::logic_error("surface without facet-to-cell map");
-    ownsFacet_[b].resize(surf.numFacets());
-    for (LocalIndex f = 0; f < surf.numFacets(); ++f) ownsFacet_[b][f] = dofs_->cellOwner(surf.facetCells[f]) == rank;
+    ownsFacet[b].resize(surf.numFacets());
+    for (LocalIndex f = 0; f < surf.numFacets(); ++f) ownsFacet[b][f] = dofs_->cellOwner(surf.facetCells[f]) == rank;
   }
-  // each rank searches and pairs only the points of its own facets (against every whole surface)
-  if (dofs_->comm()->getSize() > 1) interaction_->setEvaluatedFacets(ownsFacet_);
+  interaction_->setEvaluatedFacets(std::move(ownsFacet));
 }
 
 InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const VectorView& fv, Matrix* J) {
@@ -81,10 +82,8 @@ InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const
         }
     }
   };
-  // each pair is evaluated by exactly one rank
-  auto owned = [&](const interaction::InteractionPair& p) { return bool(ownsFacet_[p.body][p.facet]); };
   try {
-    interaction_->evaluate(x.data(), scatter, J != nullptr, owned);
+    interaction_->evaluate(x.data(), scatter, J != nullptr);
   } catch (const NumericalError& e) {
     out.failure = e.what();
   }
@@ -92,13 +91,8 @@ InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const
 }
 
 std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteractionPart::couplings(const Vector& u, Real radius) {
-  const std::vector<Real>& x = coords_.update(u);
-  const Map& overlap = *dofs_->overlapMap();
-  std::vector<std::pair<LocalIndex, LocalIndex>> wanted;
-  for (const auto& rc : interaction_->couplings(x.data(), radius))
-    if (overlap.getLocalElement(dofs_->dof(rc.first, 0)) != Teuchos::OrdinalTraits<LocalIndex>::invalid())
-      wanted.push_back(rc);
-  return wanted;
+  // rows: the nodes of this rank's facets, all on its overlap map
+  return interaction_->couplings(coords_.update(u).data(), radius);
 }
 
 std::vector<std::array<Real, 3>> SurfaceInteractionPart::forces() const {

@@ -59,8 +59,7 @@ class SurfaceInteractionPart final : public InteractionPart {
   int dim_;
   std::shared_ptr<interaction::SurfaceInteraction> interaction_;
   Real searchRadiusFactor_;
-  std::vector<std::vector<char>> ownsFacet_;  ///< [body][facet]: this rank evaluates it
-  ReplicatedCoordinates coords_;              ///< every surface node, on every rank
+  ReplicatedCoordinates coords_;  ///< every surface node, on every rank
   double searchSeconds_ = 0.0;
 };
 
