@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study pulloff-map stability-map sphere-3d method-study sanitize fuzz
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study pulloff-map stability-map sphere-3d method-study sanitize fuzz peers
 
 deps:
 	@bash scripts/install-deps.sh
@@ -45,6 +45,13 @@ fuzz: build
 
 bench: build
 	@bash bench/run-all.sh $(BUILD_DIR)
+
+# cgcm against dolfinx (Debian's python3-dolfinx, installed here if missing) on
+# the same Neo-Hookean block, 108k and 311k unknowns, 1 and 2 ranks; about 8
+# minutes. The table is in doc/performance.md.
+peers: build
+	@bash scripts/install-deps.sh --peers
+	/usr/bin/python3 bench/peers/compare_dolfinx.py --bench $(BUILD_DIR)/bin/bench_peer_block --repeats 3
 
 # Every figure of doc/validation.md and its tables (tools/make_figures.sh;
 # the long studies below are run when their tables are missing under output/).

@@ -2,6 +2,10 @@
 # Installs the Debian (bookworm) packages cgcm needs to build, test and plot.
 # Idempotent: packages already present are skipped, so `make demo` / `make test`
 # can call it on every run. Needs root (or sudo) only when something is missing.
+#
+#   install-deps.sh [--peers]
+#   --peers: also dolfinx (python3-dolfinx, about 120 packages), the peer code
+#            of `make peers` (bench/peers/); not needed to build or test cgcm.
 set -euo pipefail
 
 packages=(
@@ -22,6 +26,12 @@ packages=(
   # tests and plots
   googletest libgtest-dev python3 python3-numpy python3-matplotlib python3-netcdf4
 )
+
+case "${1:-}" in
+  "") ;;
+  --peers) packages+=(python3-dolfinx) ;;
+  *) echo "install-deps: unknown option \"$1\"; allowed: --peers" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
