@@ -121,7 +121,7 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
     // On the graded tetrahedral meshes of the 3D sphere deck the estimate falls short, more so the finer
     // the mesh, and the modes above it are amplified: Ifpack2's boost of 1.1 gave 43 Krylov iterations per
     // solve at 27k unknowns, 80 at 170k and 260 at a million, 1.5 gives 39, 55 and 62 (a million on two
-    // ranks: 39 s per Newton iteration against 91 s). The hex8 box loses 3 of 55-60. (doc/performance.md)
+    // ranks: 39 s per Newton iteration against 123 s). The hex8 box loses 3 of 55-60. (doc/performance.md)
     m.sublist("smoother: params").set("chebyshev: boost factor", 1.5);
     // Coarsen down to 200 rows rather than MueLu's 2000: the coarsest level has only a Jacobi sweep. The
     // sphere deck above: 259 Krylov iterations against 391, 19.8 s against 21.2 s; the 311k box 22
