@@ -47,7 +47,7 @@ bench: build
 	@bash bench/run-all.sh $(BUILD_DIR)
 
 # cgcm against dolfinx (Debian's python3-dolfinx, installed here if missing) on
-# the same Neo-Hookean block, 108k and 311k unknowns, 1 and 2 ranks; about 8
+# the same Neo-Hookean block, 108k and 311k unknowns, 1 and 2 ranks; about 5
 # minutes. The table is in doc/performance.md.
 peers: build
 	@bash scripts/install-deps.sh --peers

@@ -12,7 +12,7 @@
 // Prints one JSON line on rank 0: sizes, Newton and Krylov counts, the top
 // reaction force and the wall time over the whole Newton solve of residual
 // assembly, Jacobian assembly (cgcm's includes the residual: one fused pass)
-// and linear solves (preconditioner set-up included).
+// and linear solves (solve_s, preconditioner set-up included; setup_s alone).
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_Core.hpp>
