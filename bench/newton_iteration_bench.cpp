@@ -12,7 +12,6 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -21,11 +20,11 @@
 #include "cgcm/assembly/Dirichlet.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
+#include "BenchSupport.hpp"
 
 using namespace cgcm;
-using Clock = std::chrono::steady_clock;
-
-static double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+using bench::Clock;
+using bench::secondsSince;
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);
@@ -98,30 +97,26 @@ int main(int argc, char** argv) {
     auto t = Clock::now();
     problem.evaluate(u, f, nullptr);
     comm->barrier();
-    tRes = std::min(tRes, since(t));
+    tRes = std::min(tRes, secondsSince(t));
     t = Clock::now();
     problem.evaluate(u, f, J.get());
     comm->barrier();
-    tJac = std::min(tJac, since(t));
+    tJac = std::min(tJac, secondsSince(t));
     t = Clock::now();
     bc.applyToResidual(u, load, f);
     bc.applyToJacobian(*J);
     comm->barrier();
-    tBc = std::min(tBc, since(t));
+    tBc = std::min(tBc, secondsSince(t));
     t = Clock::now();
     auto space = Thyra::createVectorSpace<Real>(dofs->ownedMap());
     Teuchos::RCP<const Thyra::LinearOpBase<Real>> op = Thyra::tpetraLinearOp<Real, LocalIndex, GlobalIndex, assembly::Node>(
         space, space, Teuchos::rcp_implicit_cast<assembly::Operator>(J));
     auto lows = Thyra::linearOpWithSolve(*factory, op);
-    du.putScalar(0.0);
-    auto fT = Thyra::createConstVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(f), space);
-    auto duT = Thyra::createVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(du), space);
-    const auto status = lows->solve(Thyra::NOTRANS, *fT, duT.ptr());
+    const auto solved = bench::solve(*lows, space, f, du);
     comm->barrier();
-    tSolve = std::min(tSolve, since(t));
-    if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED && root) std::printf("  (linear solve unconverged)\n");
-    if (!status.extraParameters.is_null() && status.extraParameters->isType<int>("Iteration Count"))
-      krylovIterations = status.extraParameters->get<int>("Iteration Count");
+    tSolve = std::min(tSolve, secondsSince(t));
+    if (!solved.converged && root) std::printf("  (linear solve unconverged)\n");
+    krylovIterations = solved.iterations;
   }
   // residual of the linear solve, as a check that the numbers are for a real solve
   assembly::Vector r(dofs->ownedMap());

@@ -17,7 +17,6 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -25,11 +24,11 @@
 #include "cgcm/assembly/Problem.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
+#include "../BenchSupport.hpp"
 
 using namespace cgcm;
-using Clock = std::chrono::steady_clock;
-
-static double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+using bench::Clock;
+using bench::secondsSince;
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);
@@ -93,7 +92,7 @@ int main(int argc, char** argv) {
     problem.evaluate(u, f, nullptr);
     bc.applyToResidual(u, press, f);
     comm->barrier();
-    tResidual += since(t);
+    tResidual += secondsSince(t);
     if (f.norm2() < newtonTolerance) {
       converged = true;
       break;
@@ -103,22 +102,18 @@ int main(int argc, char** argv) {
     bc.applyToResidual(u, press, f);
     bc.applyToJacobian(*J);
     comm->barrier();
-    tJacobian += since(t);
+    tJacobian += secondsSince(t);
 
     t = Clock::now();
     Thyra::initializeOp(*factory, op, lows.ptr());
     comm->barrier();
-    tSetup += since(t);
+    tSetup += secondsSince(t);
     t = Clock::now();
-    du.putScalar(0.0);
-    auto fT = Thyra::createConstVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(f), space);
-    auto duT = Thyra::createVector<Real, LocalIndex, GlobalIndex, assembly::Node>(Teuchos::rcpFromRef(du), space);
-    const auto status = lows->solve(Thyra::NOTRANS, *fT, duT.ptr());
+    const auto solved = bench::solve(*lows, space, f, du);
     comm->barrier();
-    tSolve += since(t);
-    if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED) ++unconvergedSolves;
-    if (!status.extraParameters.is_null() && status.extraParameters->isType<int>("Iteration Count"))
-      krylov += status.extraParameters->get<int>("Iteration Count");
+    tSolve += secondsSince(t);
+    if (!solved.converged) ++unconvergedSolves;
+    krylov += solved.iterations;
     J->apply(du, r);
     r.update(-1.0, f, 1.0);
     worstLinearResidual = std::max(worstLinearResidual, r.norm2() / f.norm2());
