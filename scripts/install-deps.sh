@@ -19,6 +19,11 @@ packages=(
   # libraries Trilinos' CMake config links by absolute path without depending on them
   libptscotch-dev libscotch-dev libmumps-dev libhdf5-openmpi-dev zlib1g-dev
   libblas-dev liblapack-dev
+  # the BLAS behind MUMPS' dense kernels: single-threaded OpenBLAS takes over
+  # libblas.so.3 from the reference BLAS through Debian's alternatives (2D
+  # level-2 deck: factorisations 2.8 times faster; doc/performance.md), and
+  # starts no threads to compete with the MPI ranks
+  libopenblas0-serial
   # geometry, meshing, output
   libcgal-dev libgmp-dev libmpfr-dev libgmsh-dev libexodusii-dev libnetcdf-dev
   # Boost.Math (root finding in the fold location)

@@ -581,34 +581,41 @@ RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double sca
   return A;
 }
 
-// MUMPS solves to round-off on any number of ranks, with several right-hand
-// sides, after new values on the same pattern and after a new pattern (also
-// one that changes on one rank only); a
-// singular matrix is an error that says so.
+// MUMPS solves to round-off on any number of ranks, with either ordering and
+// several right-hand sides, after new values on the same pattern and after a
+// new pattern (also one that changes on one rank only, and one with more
+// fill, which needs a larger workspace); a singular matrix is an error that
+// says so.
 TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
   auto comm = Tpetra::getDefaultComm();
   auto map = Teuchos::rcp(new assembly::Map(Tpetra::global_size_t(101), 0, comm));
   ParameterList settings("Linear Solver");
   settings.set("Type", "MUMPS");
   settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
-  const auto factory = solver::buildLinearSolver(settings, comm->getSize(), 1);
-  const auto lows = factory->createOp();
-  for (const auto& [scale, widenBelow] : {std::pair<double, GlobalIndex>{1.0, 0}, {3.0, 0}, {1.0, 10}, {1.0, 101}}) {
-    SCOPED_TRACE("scale " + std::to_string(scale) + ", extra couplings in rows below " + std::to_string(widenBelow));
-    const auto A = stencil(map, scale, widenBelow);
-    const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(A));
-    Thyra::initializeOp(*factory, op, lows.ptr());
-    assembly::MultiVector exact(map, 2), b(map, 2), x(map, 2);
-    exact.randomize();
-    A->apply(exact, b);
-    Thyra::solve(*lows, Thyra::NOTRANS, *Thyra::createConstMultiVector(Teuchos::rcp_implicit_cast<const assembly::MultiVector>(Teuchos::rcpFromRef(b))),
-                 Thyra::createMultiVector(Teuchos::rcpFromRef(x)).ptr());
-    x.update(-1.0, exact, 1.0);
-    std::vector<double> err(2), size(2);
-    x.normInf(err);
-    exact.normInf(size);
-    for (int k = 0; k < 2; ++k) EXPECT_LT(err[k], 1e-13 * size[k]) << "right-hand side " << k;
+  for (const char* ordering : {"AMD", "PORD"}) {
+    SCOPED_TRACE(std::string("ordering ") + ordering);
+    settings.set("MUMPS Ordering", ordering);
+    const auto factory = solver::buildLinearSolver(settings, comm->getSize(), 1);
+    const auto lows = factory->createOp();
+    for (const auto& [scale, widenBelow] :
+         {std::pair<double, GlobalIndex>{1.0, 0}, {3.0, 0}, {1.0, 10}, {1.0, 101}, {2.0, 101}}) {
+      SCOPED_TRACE("scale " + std::to_string(scale) + ", extra couplings in rows below " + std::to_string(widenBelow));
+      const auto A = stencil(map, scale, widenBelow);
+      const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(A));
+      Thyra::initializeOp(*factory, op, lows.ptr());
+      assembly::MultiVector exact(map, 2), b(map, 2), x(map, 2);
+      exact.randomize();
+      A->apply(exact, b);
+      Thyra::solve(*lows, Thyra::NOTRANS, *Thyra::createConstMultiVector(Teuchos::rcp_implicit_cast<const assembly::MultiVector>(Teuchos::rcpFromRef(b))),
+                   Thyra::createMultiVector(Teuchos::rcpFromRef(x)).ptr());
+      x.update(-1.0, exact, 1.0);
+      std::vector<double> err(2), size(2);
+      x.normInf(err);
+      exact.normInf(size);
+      for (int k = 0; k < 2; ++k) EXPECT_LT(err[k], 1e-13 * size[k]) << "right-hand side " << k;
+    }
   }
+  const auto factory = solver::buildLinearSolver(settings, comm->getSize(), 1);
 
   // the stencil with an empty last row is singular
   auto singular = Teuchos::rcp(new assembly::CrsMatrix(map, 3));
@@ -622,6 +629,14 @@ TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
   const auto fresh = factory->createOp();
   expectThrowMatching<std::runtime_error>([&] { Thyra::initializeOp(*factory, op, fresh.ptr()); },
                                           "MUMPS factorisation failed .*singular");
+}
+
+TEST(LinearSolver, AnUnknownMumpsOrderingIsRejectedByName) {
+  ParameterList settings("Linear Solver");
+  settings.set("MUMPS Ordering", "METIS");  // not in Debian's MUMPS
+  expectThrowMatching<std::exception>(
+      [&] { settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters()); },
+      "\"MUMPS Ordering\" parameter");
 }
 
 TEST(LinearSolver, VerbatimStratimikosListIsUsedAndValidated) {
