@@ -20,6 +20,11 @@ residual (one fused pass over the cells); dolfinx assembles the matrix
 alone. cgcm solves with Belos GMRES + MueLu (its default in 3D; Dirichlet
 rows are replaced, so the matrix is not symmetric), dolfinx with CG + GAMG
 and the six rigid-body modes (symmetric elimination).
+
+Both codes run with the same memory pages: by default glibc's malloc in
+transparent huge pages (the tunable glibc.malloc.hugetlb=1, which cgcm sets
+for itself and the script sets for dolfinx too), with --pages small in 4 KiB
+pages (CGCM_HUGE_PAGES=0, no tunable).
 """
 import argparse
 import json
@@ -33,9 +38,9 @@ PHASES = [("residual_s", "residual_evaluations", "residual"), ("jacobian_s", "ne
           ("solve_s", None, "solve")]  # solves: totals over the Newton solve
 
 
-def run(command, ranks):
-    full = MPIRUN + ["-np", str(ranks)] + command
-    done = subprocess.run(full, capture_output=True, text=True)
+def run(command, ranks, env):
+    full = MPIRUN + ["-np", str(ranks)] + [arg for name in sorted(env) for arg in ("-x", name)] + command
+    done = subprocess.run(full, capture_output=True, text=True, env={**os.environ, **env})
     lines = [l for l in done.stdout.splitlines() if l.startswith("{")]
     if done.returncode != 0 or not lines:
         sys.stderr.write(f"failed ({done.returncode}): {' '.join(full)}\n{done.stdout[-2000:]}{done.stderr[-2000:]}")
@@ -58,6 +63,9 @@ def main():
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2], help="MPI ranks (default: 1 2)")
     parser.add_argument("--repeats", type=int, default=2, help="interleaved runs of each code (default: 2)")
     parser.add_argument("--rtol", type=float, default=1e-8, help="relative tolerance of every linear solve")
+    parser.add_argument("--pages", choices=["huge", "small"], default="huge",
+                        help="glibc malloc's pages in both codes: huge (transparent huge pages, cgcm's default) or "
+                        "small (4 KiB)")
     parser.add_argument("--markdown", action="store_true", help="print the table as Markdown")
     args = parser.parse_args()
     if not os.access(args.bench, os.X_OK):
@@ -65,6 +73,10 @@ def main():
     if args.repeats < 1 or args.rtol <= 0 or min(args.sizes) < 1 or min(args.ranks) < 1:
         parser.error("--repeats, --sizes and --ranks must be at least 1, --rtol positive")
 
+    tunables = [t for t in os.environ.get("GLIBC_TUNABLES", "").split(":") if t and "malloc.hugetlb" not in t]
+    if args.pages == "huge":
+        tunables.append("glibc.malloc.hugetlb=1")
+    env = {"GLIBC_TUNABLES": ":".join(tunables), "CGCM_HUGE_PAGES": "1" if args.pages == "huge" else "0"}
     cgcm = [os.path.abspath(args.bench)]
     dolfinx = ["/usr/bin/python3", os.path.join(HERE, "neo_hookean_block_dolfinx.py")]
     rows, ok = [], True
@@ -75,7 +87,7 @@ def main():
                 order = [("cgcm", cgcm), ("dolfinx", dolfinx)]
                 for code, command in order if repeat % 2 == 0 else reversed(order):
                     r = run(command + [str(n), *(["Belos GMRES + MueLu"] if code == "cgcm" else []), str(args.rtol)],
-                            ranks)
+                            ranks, env)
                     if r is None or not r["converged"] or r["unconverged_solves"]:
                         ok = False
                     if r is not None:
