@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "cgcm/app/PathAnalysis.hpp"
+#include "cgcm/core/HugePages.hpp"
 
 namespace cgcm::app {
 
@@ -77,6 +78,7 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
       std::snprintf(buf, sizeof buf, "%s %.0f MB", r == 0 ? "" : ",", result.peakMemoryMB[r]);
       line += buf;
     }
+    line += core::hugePageMalloc() ? " (malloc in transparent huge pages)" : " (malloc in 4 KiB pages)";
     both((line + "\n").c_str());
   }
   if (!result.volumePairs.empty()) both((result.volumePairs + "\n").c_str());

@@ -36,4 +36,15 @@ inline void useHugePageMalloc(char** argv) {
 #endif
 }
 
+/// Whether glibc's malloc was told to use huge pages in this process (the
+/// tunable glibc.malloc.hugetlb set to 1 or 2, by useHugePageMalloc or by the
+/// caller's environment).
+inline bool hugePageMalloc() {
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (!tunables) return false;
+  const std::string t = tunables, key = "glibc.malloc.hugetlb=";
+  const auto at = t.find(key);
+  return at != std::string::npos && at + key.size() < t.size() && t[at + key.size()] != '0';
+}
+
 }  // namespace cgcm::core
