@@ -3,10 +3,6 @@
 #include <dmumps_c.h>
 #include <mpi.h>
 
-#include <sys/mman.h>
-
-#include <cstdlib>
-#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -31,10 +27,6 @@ using Converter = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, Global
 // MUMPS' 1-based ICNTL / INFOG (the manual's numbering).
 int& icntl(DMUMPS_STRUC_C& id, int i) { return id.icntl[i - 1]; }
 int infog(const DMUMPS_STRUC_C& id, int i) { return id.infog[i - 1]; }
-int info(const DMUMPS_STRUC_C& id, int i) { return id.info[i - 1]; }
-
-// A MUMPS size: entries when positive, millions of entries when negative.
-std::size_t entries(int size) { return size >= 0 ? std::size_t(size) : std::size_t(-double(size) * 1e6); }
 
 // What a failed MUMPS phase means, in words where the code is common.
 std::string failure(const char* phase, const DMUMPS_STRUC_C& id) {
@@ -44,37 +36,6 @@ std::string failure(const char* phase, const DMUMPS_STRUC_C& id) {
   if (infog(id, 1) == -9 || infog(id, 1) == -8 || infog(id, 1) == -13) os << ": out of memory";
   return os.str();
 }
-
-/// MUMPS' workspace, in transparent huge pages where the kernel offers them:
-/// the factorisation touches all of it, and on this virtual machine a 4 KiB
-/// page fault costs about 8 us (0.2 s for each 76 MB workspace of the 2D
-/// level-2 deck). Not zeroed: MUMPS writes before it reads.
-class Workspace {
- public:
-  ~Workspace() { std::free(data_); }
-  /// Room for at least `n` entries; the contents are lost.
-  void reserve(std::size_t n) {
-    if (n <= size_) return;
-    constexpr std::size_t hugePage = std::size_t(2) << 20;
-    const std::size_t bytes = (n * sizeof(Real) + hugePage - 1) / hugePage * hugePage;
-    std::free(data_);
-    data_ = static_cast<Real*>(std::aligned_alloc(hugePage, bytes));
-    if (!data_) {
-      size_ = 0;
-      throw std::bad_alloc();
-    }
-#ifdef MADV_HUGEPAGE
-    madvise(data_, bytes, MADV_HUGEPAGE);  // advice only: 4 KiB pages if refused
-#endif
-    size_ = bytes / sizeof(Real);
-  }
-  Real* data() { return data_; }
-  std::size_t size() const { return size_; }
-
- private:
-  Real* data_ = nullptr;
-  std::size_t size_ = 0;
-};
 
 /// One factorised matrix: the MUMPS instance, the coordinates it was given and
 /// the maps that gather right-hand sides on rank 0.
@@ -150,11 +111,6 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
       id_.job = 1;
       dmumps_c(&id_);
       if (infog(id_, 1) < 0) throw std::runtime_error(failure("analysis", id_));
-      // Our workspace, kept across factorisations: MUMPS frees and allocates
-      // its own for each one, and the page faults of first touches took a
-      // quarter of each factorisation in 2D (doc/performance.md).
-      const auto needed = std::size_t(double(entries(info(id_, 8))) * (1.0 + icntl(id_, 14) / 100.0)) + 1;
-      workspace_.reserve(needed);
 
       // rank 0 holds every row of the gathered vectors
       std::vector<GlobalIndex> all;
@@ -168,13 +124,11 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
     id_.a_loc = val_.data();
     // numerical factorisation; out of memory: more workspace, twice
     for (int attempt = 0;; ++attempt) {
-      id_.wk_user = workspace_.data();
-      id_.lwk_user = workspace_.size() < 1000000000 ? int(workspace_.size()) : -int(workspace_.size() / 1000000);
       id_.job = 2;
       dmumps_c(&id_);
       if (infog(id_, 1) >= 0) break;
       if (infog(id_, 1) != -9 || attempt == 2) throw std::runtime_error(failure("factorisation", id_));
-      workspace_.reserve(2 * workspace_.size());
+      icntl(id_, 14) *= 2;
     }
   }
 
@@ -235,7 +189,6 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
   GlobalIndex n_ = 0;
   std::vector<int> irn_, jcn_;
   std::vector<Real> val_;
-  Workspace workspace_;  // MUMPS' WK_USER: factors and fronts
   Teuchos::RCP<const Map> rootMap_;
   Teuchos::RCP<const Import> gather_, scatter_;
 };

@@ -584,8 +584,7 @@ RCP<assembly::CrsMatrix> stencil(const RCP<const assembly::Map>& map, double sca
 // MUMPS solves to round-off on any number of ranks, with either ordering and
 // several right-hand sides, after new values on the same pattern and after a
 // new pattern (also one that changes on one rank only, and one with more
-// fill, which needs a larger workspace); a singular matrix is an error that
-// says so.
+// fill); a singular matrix is an error that says so.
 TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
   auto comm = Tpetra::getDefaultComm();
   auto map = Teuchos::rcp(new assembly::Map(Tpetra::global_size_t(101), 0, comm));
