@@ -76,7 +76,8 @@ int main(int argc, char** argv) {
   settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
   auto factory = solver::buildLinearSolver(
       settings, comm->getSize(), dim,
-      nullSpace == "rigid" ? assembly::rigidBodyModes(*dofs, *mesh, form) : Teuchos::null);
+      nullSpace == "rigid" ? assembly::rigidBodyModes(*dofs, *mesh, form) : Teuchos::null,
+      /*symmetric=*/true);  // no interaction
 
   assembly::Vector u(dofs->ownedMap()), f(dofs->ownedMap()), du(dofs->ownedMap());
   const double load = -0.05;

@@ -895,7 +895,8 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
   const bool rigid = linearSolver.get<std::string>("MueLu Near Null Space") == "rigid body modes";
   const auto modes = rigid ? assembly::rigidBodyModes(*dofs, *setup.mesh, setup.formulation) : Teuchos::null;
   return discretize(dofs, setup,
-                    solver::buildLinearSolver(linearSolver, comm->getSize(), dofs->dofsPerNode(), modes));
+                    solver::buildLinearSolver(linearSolver, comm->getSize(), dofs->dofsPerNode(), modes,
+                                              !setup.interaction.has_value()));
 }
 
 }  // namespace cgcm::app

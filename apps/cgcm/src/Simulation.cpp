@@ -105,7 +105,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   newtonSettings.forceScale = setup.forceScale;
   const int dim = assembly::formulationDim(setup.formulation);
   const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
-  solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim);  // rejects bad settings now
+  // rejects bad settings now
+  solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim, Teuchos::null, !setup.interaction.has_value());
+  const std::string linearSolverType = solver::resolvedLinearSolverType(linearSolverSettings, dim);
   for (const auto& c : setup.conditions) setup.mesh->nodeSet(c.nodeSet);
   Teuchos::ParameterList loca = deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA");
   {
@@ -323,6 +325,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     // LOCA does not report its solves (its groups do not log them to NOX's statistics).
     result.linearSolves = newton.linearSolves().solves;
     result.krylovIterations = newton.linearSolves().iterations;
+    result.linearSolver = linearSolverType;
   }
   const auto graph = problem->graph();  // collective only when it has to be built
   result.matrixRows = graph->getGlobalNumRows();

@@ -53,12 +53,15 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
                 result.continuationSteps, result.graphRestarts);
   both(buf);
   const char* which = result.continuationSteps > 0 ? "linear solves outside continuation" : "linear solves";
-  if (result.krylovIterations > 0)
-    std::snprintf(buf, sizeof buf, "%s = %ld, Krylov iterations = %ld (%.1f per solve)\n", which,
-                  result.linearSolves, result.krylovIterations,
-                  double(result.krylovIterations) / double(std::max(1L, result.linearSolves)));
+  const bool direct = result.linearSolver == "MUMPS" || result.linearSolver == "Amesos2 KLU2";
+  if (direct || (result.krylovIterations == 0 && result.linearSolver == "Stratimikos"))
+    std::snprintf(buf, sizeof buf, "%s = %ld (%s)\n", which, result.linearSolves,
+                  direct ? ("direct solver " + result.linearSolver).c_str() : "Stratimikos");
   else
-    std::snprintf(buf, sizeof buf, "%s = %ld (direct solver)\n", which, result.linearSolves);
+    std::snprintf(buf, sizeof buf, "%s = %ld, Krylov iterations = %ld (%.1f per solve)%s%s\n", which,
+                  result.linearSolves, result.krylovIterations,
+                  double(result.krylovIterations) / double(std::max(1L, result.linearSolves)),
+                  result.linearSolver.empty() ? "" : ", ", result.linearSolver.c_str());
   both(buf);
   std::snprintf(buf, sizeof buf, "Jacobian at the end: %zu rows, %zu entries (%.1f per row)\n",
                 result.matrixRows, result.matrixEntries,

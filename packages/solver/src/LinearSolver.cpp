@@ -1,6 +1,7 @@
 #include "cgcm/solver/LinearSolver.hpp"
 
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
@@ -13,12 +14,35 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/solver/ParameterValidators.hpp"
 #include "MumpsSolver.hpp"
+#include "SymmetricElimination.hpp"
 
 namespace cgcm::solver {
 
 namespace {
-const char* const kTypes[] = {"auto",        "MUMPS", "Amesos2 KLU2", "Belos GMRES + Ifpack2", "Belos GMRES + MueLu",
+const char* const kTypes[] = {"auto",
+                              "MUMPS",
+                              "Amesos2 KLU2",
+                              "Belos GMRES + Ifpack2",
+                              "Belos GMRES + MueLu",
+                              "Belos CG + MueLu",
                               "Stratimikos"};
+
+// "auto". 3D: GMRES + MueLu, also for a symmetric tangent: CG with the Dirichlet rows eliminated
+// symmetrically took as long on the hex8 Neo-Hookean block (bench/peers, 108k unknowns, 4 interleaved runs:
+// 2.9-3.2 s on one rank, 1.9-2.9 s on two, both), its cheaper iterations paid for by a dearer MueLu set-up on
+// the eliminated copy (1.47 s against 1.36 s over three set-ups: MueLu's own timers). MueLu against the
+// others, measured on the tetrahedral quarter sphere on half-space (5.9k dofs, one rank): 0.32 s per solve
+// against 1.1 s for KLU2 and 4 s for GMRES + RILUK(2).
+// 2D: MUMPS. Measured on the default deck: on one rank 0.89 s against 1.48 s per Newton iteration for KLU2
+// at Mesh Refinement 2 (40k unknowns, side by side on a loaded machine), 2.8 s against 4.0 s of linear
+// solves over the level-0 path; on two ranks at level 1 14.5 s against 27.3 s for GMRES + RILUK(2) over
+// the path. Load curves identical to 1e-14.
+}  // namespace
+
+std::string resolvedLinearSolverType(const Teuchos::ParameterList& settings, int dofsPerNode) {
+  const std::string type = settings.get<std::string>("Type");
+  if (type != "auto") return type;
+  return dofsPerNode == 3 ? "Belos GMRES + MueLu" : "MUMPS";
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
@@ -27,9 +51,10 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   valid = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
   const auto types = validators::choices(std::vector<std::string>(std::begin(kTypes), std::end(kTypes)));
   valid->set("Type", "auto",
-             "auto: MUMPS in 2D, Belos GMRES + MueLu in 3D; or MUMPS (direct, "
-             "any number of ranks), Amesos2 KLU2 (direct, one rank only), Belos GMRES + Ifpack2, Belos GMRES + MueLu, "
-             "Stratimikos (use the Stratimikos sublist as is)",
+             "auto: MUMPS in 2D, Belos GMRES + MueLu in 3D; or MUMPS (direct, any number of ranks), Amesos2 KLU2 (direct, one rank only), Belos GMRES + Ifpack2, "
+             "Belos GMRES + MueLu, Belos CG + MueLu (conjugate gradients on the Jacobian with its Dirichlet rows "
+             "eliminated symmetrically; needs a symmetric tangent, so no interaction: Method 3's is not "
+             "symmetric), Stratimikos (use the Stratimikos sublist as is)",
              types);
   using namespace validators;
   // AMD in 2D: the graph follows the spreading contact, so MUMPS analyses again in most steps (69 analyses
@@ -71,16 +96,13 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
 
 Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
     const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
-    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace) {
-  std::string type = settings.get<std::string>("Type");
+    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace, bool symmetric) {
+  const std::string type = resolvedLinearSolverType(settings, dofsPerNode);
   if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
-  // 3D (3 dofs per node): MueLu. Measured on the tetrahedral quarter sphere on half-space (5.9k dofs, one
-  // rank): 0.32 s per solve against 1.1 s for KLU2 and 4 s for GMRES + RILUK(2).
-  // 2D: MUMPS. Measured on the default deck: on one rank 0.89 s against 1.48 s per Newton iteration for KLU2
-  // at Mesh Refinement 2 (40k unknowns, side by side on a loaded machine), 2.8 s against 4.0 s of linear
-  // solves over the level-0 path; on two ranks at level 1 14.5 s against 27.3 s for GMRES + RILUK(2) over
-  // the path. Load curves identical to 1e-14.
-  if (type == "auto") type = dofsPerNode == 3 ? "Belos GMRES + MueLu" : "MUMPS";
+  if (type == "Belos CG + MueLu" && !symmetric)
+    throw InputError(
+        "Solver/Linear Solver/Type = \"Belos CG + MueLu\" needs a symmetric tangent, and this problem's "
+        "interaction tangent is not symmetric; use \"auto\", \"Belos GMRES + MueLu\" or \"MUMPS\"");
   auto p = Teuchos::rcp(new Teuchos::ParameterList("Stratimikos"));
   if (type == "MUMPS") {
     p->set("Linear Solver Type", "MUMPS");
@@ -103,18 +125,25 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
   }
   p->set("Linear Solver Type", "Belos");
   auto& belos = p->sublist("Linear Solver Types").sublist("Belos");
-  belos.set("Solver Type", "Block GMRES");
-  auto& gmres = belos.sublist("Solver Types").sublist("Block GMRES");
-  gmres.set("Convergence Tolerance", settings.get<double>("Tolerance"));
-  gmres.set("Maximum Iterations", settings.get<int>("Max Iterations"));
-  gmres.set("Num Blocks", settings.get<int>("Krylov Space"));
+  if (type == "Belos CG + MueLu") {
+    belos.set("Solver Type", "Pseudo Block CG");
+    auto& cg = belos.sublist("Solver Types").sublist("Pseudo Block CG");
+    cg.set("Convergence Tolerance", settings.get<double>("Tolerance"));
+    cg.set("Maximum Iterations", settings.get<int>("Max Iterations"));
+  } else {
+    belos.set("Solver Type", "Block GMRES");
+    auto& gmres = belos.sublist("Solver Types").sublist("Block GMRES");
+    gmres.set("Convergence Tolerance", settings.get<double>("Tolerance"));
+    gmres.set("Maximum Iterations", settings.get<int>("Max Iterations"));
+    gmres.set("Num Blocks", settings.get<int>("Krylov Space"));
+  }
   if (type == "Belos GMRES + Ifpack2") {
     p->set("Preconditioner Type", "Ifpack2");
     auto& ifp = p->sublist("Preconditioner Types").sublist("Ifpack2");
     // RILUK on each rank's diagonal block (block Jacobi with incomplete LU).
     ifp.set("Prec Type", "RILUK");
     ifp.sublist("Ifpack2 Settings").set("fact: iluk level-of-fill", settings.get<int>("ILU Fill Level"));
-  } else {  // MueLu: smoothed aggregation, no direct coarse solve (KLU2 is wrong on several ranks)
+  } else {  // MueLu (GMRES or CG): smoothed aggregation, no direct coarse solve (KLU2 is wrong on several ranks)
     p->set("Preconditioner Type", "MueLu");
     auto& m = p->sublist("Preconditioner Types").sublist("MueLu");
     m.set("verbosity", "none");
@@ -145,7 +174,7 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
     const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
-    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace) {
+    const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace, bool symmetric) {
   using namespace assembly;
   Stratimikos::DefaultLinearSolverBuilder builder;
   builder.setPreconditioningStrategyFactory(
@@ -155,13 +184,16 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
   Stratimikos::enableMueLu<LocalIndex, GlobalIndex, Node>(builder);
   builder.setLinearSolveStrategyFactory(
       Teuchos::abstractFactoryStd<Thyra::LinearOpWithSolveFactoryBase<Real>, MumpsLinearOpWithSolveFactory>(), "MUMPS");
-  auto params = stratimikosParameters(settings, numRanks, dofsPerNode, nearNullSpace);
+  auto params = stratimikosParameters(settings, numRanks, dofsPerNode, nearNullSpace, symmetric);
   try {
     builder.setParameterList(params);
   } catch (const std::exception& e) {
     throw InputError(std::string("Solver/Linear Solver: Stratimikos rejected the parameters: ") + e.what());
   }
-  return builder.createLinearSolveStrategy("");
+  auto strategy = builder.createLinearSolveStrategy("");
+  if (resolvedLinearSolverType(settings, dofsPerNode) == "Belos CG + MueLu")
+    return Teuchos::rcp(new SymmetricEliminationFactory(strategy));
+  return strategy;
 }
 
 }  // namespace cgcm::solver

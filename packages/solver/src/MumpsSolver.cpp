@@ -39,7 +39,7 @@ std::string failure(const char* phase, const DMUMPS_STRUC_C& id) {
 
 /// One factorised matrix: the MUMPS instance, the coordinates it was given and
 /// the maps that gather right-hand sides on rank 0.
-class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
+class MumpsLinearOpWithSolve : public OperatorSolveBase {
  public:
   /// `ordering`: MUMPS' ICNTL(7).
   explicit MumpsLinearOpWithSolve(int ordering) : ordering_(ordering) {}
@@ -48,8 +48,7 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
   /// Factorises the matrix of `src` (collective), reusing the analysis while
   /// the sparsity pattern is unchanged.
   void initialize(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& src) {
-    src_ = src;
-    fwdOp_ = src->getOp();
+    setSource(src);
     auto A = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Converter::getConstTpetraOperator(fwdOp_), true);
     const auto rowMap = A->getRowMap();
     const auto colMap = A->getColMap();
@@ -142,19 +141,8 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
     initialized_ = false;
   }
 
-  Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>> source() const { return src_; }
-
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> range() const override { return fwdOp_->range(); }
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> domain() const override { return fwdOp_->domain(); }
 
  protected:
-  bool opSupportedImpl(Thyra::EOpTransp t) const override { return Thyra::opSupported(*fwdOp_, t); }
-  void applyImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<Real>& X,
-                 const Teuchos::Ptr<Thyra::MultiVectorBase<Real>>& Y, const Real alpha,
-                 const Real beta) const override {
-    Thyra::apply(*fwdOp_, t, X, Y, alpha, beta);
-  }
-  bool solveSupportsImpl(Thyra::EOpTransp t) const override { return Thyra::real_trans(t) == Thyra::NOTRANS; }
   bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp, const Thyra::SolveMeasureType&) const override {
     return true;  // a direct solve meets any tolerance
   }
@@ -181,8 +169,6 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<Real> {
   }
 
  private:
-  Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>> src_;
-  Teuchos::RCP<const Thyra::LinearOpBase<Real>> fwdOp_;
   mutable DMUMPS_STRUC_C id_{};
   int ordering_;
   bool initialized_ = false;
@@ -214,25 +200,6 @@ void MumpsLinearOpWithSolveFactory::initializeOp(const Teuchos::RCP<const Thyra:
                                                  const Thyra::ESupportSolveUse) const {
   TEUCHOS_TEST_FOR_EXCEPT(Op == nullptr || fwdOpSrc.is_null());
   Teuchos::dyn_cast<MumpsLinearOpWithSolve>(*Op).initialize(fwdOpSrc);
-}
-
-void MumpsLinearOpWithSolveFactory::initializePreconditionedOp(
-    const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
-    const Teuchos::RCP<const Thyra::PreconditionerBase<Real>>&, Thyra::LinearOpWithSolveBase<Real>* Op,
-    const Thyra::ESupportSolveUse supportSolveUse) const {
-  initializeOp(fwdOpSrc, Op, supportSolveUse);  // the preconditioner is not needed
-}
-
-void MumpsLinearOpWithSolveFactory::uninitializeOp(Thyra::LinearOpWithSolveBase<Real>* Op,
-                                                   Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* fwdOpSrc,
-                                                   Teuchos::RCP<const Thyra::PreconditionerBase<Real>>* prec,
-                                                   Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* approxFwdOpSrc,
-                                                   Thyra::ESupportSolveUse*) const {
-  TEUCHOS_TEST_FOR_EXCEPT(Op == nullptr);
-  auto& op = Teuchos::dyn_cast<MumpsLinearOpWithSolve>(*Op);
-  if (fwdOpSrc) *fwdOpSrc = op.source();
-  if (prec) *prec = Teuchos::null;
-  if (approxFwdOpSrc) *approxFwdOpSrc = Teuchos::null;
 }
 
 void MumpsLinearOpWithSolveFactory::setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& paramList) {

@@ -9,29 +9,17 @@
 //
 // Why not Amesos2: Debian's Amesos2 has only KLU2 and Tacho; KLU2 is slow on
 // finite-element matrices (no supernodes) and wrong on several ranks.
-#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
-
-#include "cgcm/core/Types.hpp"
+#include "OperatorSolveBase.hpp"
 
 namespace cgcm::solver {
 
-class MumpsLinearOpWithSolveFactory : public Thyra::LinearOpWithSolveFactoryBase<Real> {
+/// A direct solve needs no preconditioner: none is accepted.
+class MumpsLinearOpWithSolveFactory : public OperatorSolveFactoryBase {
  public:
   bool isCompatible(const Thyra::LinearOpSourceBase<Real>& fwdOpSrc) const override;
   Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> createOp() const override;
   void initializeOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
                     Thyra::LinearOpWithSolveBase<Real>* Op, const Thyra::ESupportSolveUse supportSolveUse) const override;
-  void uninitializeOp(Thyra::LinearOpWithSolveBase<Real>* Op,
-                      Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* fwdOpSrc,
-                      Teuchos::RCP<const Thyra::PreconditionerBase<Real>>* prec,
-                      Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* approxFwdOpSrc,
-                      Thyra::ESupportSolveUse* supportSolveUse) const override;
-  /// A preconditioner has no use in a direct solve: none is accepted.
-  bool supportsPreconditionerInputType(const Thyra::EPreconditionerInputType) const override { return false; }
-  void initializePreconditionedOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
-                                  const Teuchos::RCP<const Thyra::PreconditionerBase<Real>>& prec,
-                                  Thyra::LinearOpWithSolveBase<Real>* Op,
-                                  const Thyra::ESupportSolveUse supportSolveUse) const override;
 
   void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& paramList) override;
   Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override { return params_; }

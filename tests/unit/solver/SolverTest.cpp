@@ -6,6 +6,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_Core.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -628,6 +629,103 @@ TEST(LinearSolver, MumpsSolvesExactlyOnAnyNumberOfRanks) {
   const auto fresh = factory->createOp();
   expectThrowMatching<std::runtime_error>([&] { Thyra::initializeOp(*factory, op, fresh.ptr()); },
                                           "MUMPS factorisation failed .*singular");
+}
+
+// A symmetric positive definite stencil whose rows in `unitRows` are unit
+// rows, their other entries kept in the pattern as zeros: a stiffness matrix
+// with its Dirichlet rows replaced, symmetric no more.
+RCP<assembly::CrsMatrix> withUnitRows(const RCP<const assembly::Map>& map, const std::vector<GlobalIndex>& unitRows) {
+  auto A = Teuchos::rcp(new assembly::CrsMatrix(map, 3));
+  const GlobalIndex n = GlobalIndex(map->getGlobalNumElements());
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GlobalIndex i = map->getGlobalElement(LocalIndex(k));
+    const bool unit = std::find(unitRows.begin(), unitRows.end(), i) != unitRows.end();
+    std::vector<GlobalIndex> cols{i};
+    std::vector<double> vals{unit ? 1.0 : 2.5};
+    for (const GlobalIndex j : {i - 1, i + 1})
+      if (j >= 0 && j < n) cols.push_back(j), vals.push_back(unit ? 0.0 : -1.0);
+    A->insertGlobalValues(i, Teuchos::ArrayView<const GlobalIndex>(cols), Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+// CG with the unit rows eliminated symmetrically solves the unsymmetric
+// system itself: large prescribed values on the unit rows, two right-hand
+// sides, the tolerance asked for relative to |b| (the lifted right-hand side
+// is larger), a new pattern, new values that make one more row a unit row
+// on the same pattern, on any number of ranks. Its forward operator is the
+// matrix with its unit rows.
+TEST(LinearSolver, ConjugateGradientsSolveSystemsWithUnitRowsExactly) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = Teuchos::rcp(new assembly::Map(Tpetra::global_size_t(101), 0, comm));
+  ParameterList settings("Linear Solver");
+  settings.set("Type", "Belos CG + MueLu");
+  settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
+  const auto factory = solver::buildLinearSolver(settings, comm->getSize(), 1, Teuchos::null, true);
+  const auto lows = factory->createOp();
+  RCP<assembly::CrsMatrix> A;
+  // new matrices; then the last one's values changed so that row 20 becomes a unit row (same graph)
+  for (const auto& unitRows : {std::vector<GlobalIndex>{0, 37, 100}, std::vector<GlobalIndex>{0, 49, 50, 51, 100},
+                               std::vector<GlobalIndex>{0, 20, 49, 50, 51, 100}}) {
+    SCOPED_TRACE("unit rows " + std::to_string(unitRows.size()));
+    if (unitRows.size() < 6) {
+      A = withUnitRows(map, unitRows);
+    } else {
+      A->resumeFill();
+      if (map->isNodeGlobalElement(20))
+        A->replaceGlobalValues(20, Teuchos::tuple<GlobalIndex>(19, 20, 21), Teuchos::tuple<double>(0.0, 1.0, 0.0));
+      A->fillComplete();
+    }
+    const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(A));
+    Thyra::initializeOp(*factory, op, lows.ptr());
+    assembly::MultiVector exact(map, 2), b(map, 2), x(map, 2), Ax(map, 2);
+    exact.randomize();
+    for (const GlobalIndex i : unitRows)
+      if (map->isNodeGlobalElement(i)) exact.replaceGlobalValue(i, 0, 100.0), exact.replaceGlobalValue(i, 1, -40.0);
+    A->apply(exact, b);
+    const auto bT = Thyra::createConstMultiVector(Teuchos::rcp_implicit_cast<const assembly::MultiVector>(Teuchos::rcpFromRef(b)));
+    const auto xT = Thyra::createMultiVector(Teuchos::rcpFromRef(x));
+    const Thyra::SolveCriteria<double> criteria(
+        Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS), 1e-10);
+    x.putScalar(0.0);
+    const auto status = lows->solve(Thyra::NOTRANS, *bT, xT.ptr(), Teuchos::ptrFromRef(criteria));
+    EXPECT_EQ(status.solveStatus, Thyra::SOLVE_STATUS_CONVERGED);
+    A->apply(x, Ax);
+    Ax.update(-1.0, b, 1.0);
+    std::vector<double> residual(2), size(2), err(2), exactSize(2);
+    Ax.norm2(residual);
+    b.norm2(size);
+    x.update(-1.0, exact, 1.0);
+    x.normInf(err);
+    exact.normInf(exactSize);
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_LE(residual[k], 1e-10 * size[k]) << "right-hand side " << k;
+      EXPECT_LT(err[k], 1e-8 * exactSize[k]) << "right-hand side " << k;
+    }
+    // the unit rows hold their values exactly
+    x.update(1.0, exact, 1.0);
+    for (const GlobalIndex i : unitRows)
+      if (map->isNodeGlobalElement(i)) {
+        const LocalIndex lid = map->getLocalElement(i);
+        EXPECT_EQ(x.getData(0)[lid], 100.0);
+        EXPECT_EQ(x.getData(1)[lid], -40.0);
+      }
+    // the forward operator is A
+    Thyra::apply(*lows, Thyra::NOTRANS, *Thyra::createConstMultiVector(Teuchos::rcp_implicit_cast<const assembly::MultiVector>(Teuchos::rcpFromRef(exact))),
+                 Thyra::createMultiVector(Teuchos::rcpFromRef(Ax)).ptr());
+    Ax.update(-1.0, b, 1.0);
+    Ax.normInf(err);
+    for (int k = 0; k < 2; ++k) EXPECT_EQ(err[k], 0.0);
+  }
+}
+
+TEST(LinearSolver, ConjugateGradientsAreRefusedForAnUnsymmetricTangent) {
+  ParameterList settings("Linear Solver");
+  settings.set("Type", "Belos CG + MueLu");
+  settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
+  expectThrowMatching<InputError>([&] { solver::buildLinearSolver(settings, 1, 3, Teuchos::null, false); },
+                                  "Solver/Linear Solver/Type = \"Belos CG \\+ MueLu\" needs a symmetric tangent");
 }
 
 TEST(LinearSolver, AnUnknownMumpsOrderingIsRejectedByName) {

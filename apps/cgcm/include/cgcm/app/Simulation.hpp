@@ -41,6 +41,7 @@ struct RunResult {
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
   long linearSolves = 0;            ///< linear solves of Newton and relaxation (LOCA's not counted)
   long krylovIterations = 0;        ///< their Krylov iterations (0 with a direct solver)
+  std::string linearSolver;         ///< Solver/Linear Solver/Type, "auto" resolved
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
   std::vector<double> peakMemoryMB;                 ///< per rank: the process's peak resident memory
   std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
