@@ -29,10 +29,11 @@ const char* const kTypes[] = {"auto",
 
 // "auto". 3D: GMRES + MueLu, also for a symmetric tangent: CG with the Dirichlet rows eliminated
 // symmetrically took as long on the hex8 Neo-Hookean block (bench/peers, 108k unknowns, 4 interleaved runs:
-// 2.9-3.2 s on one rank, 1.9-2.9 s on two, both), its cheaper iterations paid for by a dearer MueLu set-up on
-// the eliminated copy (1.47 s against 1.36 s over three set-ups: MueLu's own timers). MueLu against the
-// others, measured on the tetrahedral quarter sphere on half-space (5.9k dofs, one rank): 0.32 s per solve
-// against 1.1 s for KLU2 and 4 s for GMRES + RILUK(2).
+// 2.9-3.2 s on one rank, 1.9-2.9 s on two, both): its cheaper iterations are paid for by building the
+// eliminated copy and a slower first MueLu set-up on it (1.64-1.69 s against 1.33-1.36 s over the three
+// set-ups of the Newton solve; doc/performance.md). MueLu against the others, measured on the tetrahedral
+// quarter sphere on half-space (5.9k dofs, one rank): 0.32 s per solve against 1.1 s for KLU2 and 4 s for
+// GMRES + RILUK(2).
 // 2D: MUMPS. Measured on the default deck: on one rank 0.89 s against 1.48 s per Newton iteration for KLU2
 // at Mesh Refinement 2 (40k unknowns, side by side on a loaded machine), 2.8 s against 4.0 s of linear
 // solves over the level-0 path; on two ranks at level 1 14.5 s against 27.3 s for GMRES + RILUK(2) over
