@@ -53,15 +53,14 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
                 result.continuationSteps, result.graphRestarts);
   both(buf);
   const char* which = result.continuationSteps > 0 ? "linear solves outside continuation" : "linear solves";
-  const bool direct = result.linearSolver == "MUMPS" || result.linearSolver == "Amesos2 KLU2";
-  if (direct || (result.krylovIterations == 0 && result.linearSolver == "Stratimikos"))
-    std::snprintf(buf, sizeof buf, "%s = %ld (%s)\n", which, result.linearSolves,
-                  direct ? ("direct solver " + result.linearSolver).c_str() : "Stratimikos");
+  if (result.linearSolver == "MUMPS" || result.linearSolver == "Amesos2 KLU2")
+    std::snprintf(buf, sizeof buf, "%s = %ld (direct solver %s)\n", which, result.linearSolves,
+                  result.linearSolver.c_str());
   else
-    std::snprintf(buf, sizeof buf, "%s = %ld, Krylov iterations = %ld (%.1f per solve)%s%s\n", which,
+    std::snprintf(buf, sizeof buf, "%s = %ld, Krylov iterations = %ld (%.1f per solve), %s\n", which,
                   result.linearSolves, result.krylovIterations,
                   double(result.krylovIterations) / double(std::max(1L, result.linearSolves)),
-                  result.linearSolver.empty() ? "" : ", ", result.linearSolver.c_str());
+                  result.linearSolver.c_str());
   both(buf);
   std::snprintf(buf, sizeof buf, "Jacobian at the end: %zu rows, %zu entries (%.1f per row)\n",
                 result.matrixRows, result.matrixEntries,

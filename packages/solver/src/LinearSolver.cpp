@@ -52,10 +52,11 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   valid = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
   const auto types = validators::choices(std::vector<std::string>(std::begin(kTypes), std::end(kTypes)));
   valid->set("Type", "auto",
-             "auto: MUMPS in 2D, Belos GMRES + MueLu in 3D; or MUMPS (direct, any number of ranks), Amesos2 KLU2 (direct, one rank only), Belos GMRES + Ifpack2, "
-             "Belos GMRES + MueLu, Belos CG + MueLu (conjugate gradients on the Jacobian with its Dirichlet rows "
-             "eliminated symmetrically; needs a symmetric tangent, so no interaction: Method 3's is not "
-             "symmetric), Stratimikos (use the Stratimikos sublist as is)",
+             "auto: MUMPS in 2D, Belos GMRES + MueLu in 3D; or MUMPS (direct, any number of ranks), Amesos2 KLU2 "
+             "(direct, one rank only), Belos GMRES + Ifpack2, Belos GMRES + MueLu, Belos CG + MueLu (conjugate "
+             "gradients on the Jacobian with its Dirichlet rows eliminated symmetrically; needs a symmetric "
+             "tangent, so no interaction: Method 3's is not symmetric), Stratimikos (use the Stratimikos sublist "
+             "as is)",
              types);
   using namespace validators;
   // AMD in 2D: the graph follows the spreading contact, so MUMPS analyses again in most steps (69 analyses

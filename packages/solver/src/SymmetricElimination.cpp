@@ -17,7 +17,6 @@ namespace cgcm::solver {
 namespace {
 
 using assembly::CrsMatrix;
-using assembly::Import;
 using assembly::Map;
 using assembly::MultiVector;
 using assembly::Vector;
@@ -123,13 +122,11 @@ class SymmetricEliminationSolve : public OperatorSolveBase {
         auto m = mask_->getLocalViewHost(Tpetra::Access::OverwriteAll);
         for (std::size_t i = 0; i < unitRows_.size(); ++i) m(i, 0) = unitRows_[i] ? 1.0 : 0.0;
       }
-      Vector colMask(A_->getColMap());
+      // The mask on the column map; Tpetra leaves the importer null when that is the domain map itself.
       const auto importer = A_->getCrsGraph()->getImporter();
-      if (importer.is_null())  // the column map is the domain map
-        colMask.doImport(*mask_, Import(A_->getDomainMap(), A_->getColMap()), Tpetra::INSERT);
-      else
-        colMask.doImport(*mask_, *importer, Tpetra::INSERT);
-      const auto c = colMask.getLocalViewHost(Tpetra::Access::ReadOnly);
+      Vector colMask(A_->getColMap());
+      if (!importer.is_null()) colMask.doImport(*mask_, *importer, Tpetra::INSERT);
+      const auto c = (importer.is_null() ? *mask_ : colMask).getLocalViewHost(Tpetra::Access::ReadOnly);
       zeroed_.clear();
       for (LocalIndex i = 0; i < LocalIndex(lclA.numRows()); ++i) {
         if (unitRows_[i]) continue;

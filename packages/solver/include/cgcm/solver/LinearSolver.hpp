@@ -10,8 +10,9 @@
 //          (SymmetricElimination.hpp), for symmetric tangents only;
 //          "Stratimikos": the sublist "Stratimikos" is handed to Stratimikos unchanged.
 #include <Teuchos_ParameterList.hpp>
-#include <string>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include <string>
 
 #include "cgcm/assembly/TpetraTypes.hpp"
 #include "cgcm/core/Types.hpp"
