@@ -153,7 +153,6 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
     // MueLu's factory converts a Tpetra multivector under "Nullspace" itself (non-const by its type check).
     if (!nearNullSpace.is_null())
       m.set("Nullspace", Teuchos::rcp_const_cast<assembly::MultiVector>(nearNullSpace));
-    m.set("coarse: type", "RELAXATION");
     // Chebyshev rather than symmetric Gauss-Seidel: on the hex8 Neo-Hookean box (bench_newton_iteration,
     // one rank) 1.80 s against 3.33 s per solve at 108k unknowns and 6.4 s against 12.5 s at 311k, with
     // 25-33 iterations against 20-26; on the 3D sphere deck at lcContact = 0.02 (27k unknowns, 88 entries
@@ -170,6 +169,13 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
     // sphere deck above: 259 Krylov iterations against 391, 19.8 s against 21.2 s; the 311k box 22
     // iterations against 33, 5.4 s against 6.4 s; the 108k box is unchanged.
     m.set("coarse: max size", 200);
+    // No direct coarse solve (KLU2 is wrong on several ranks), but Chebyshev of degree 10 there rather than
+    // one Jacobi sweep; it costs ten products with a matrix of at most a few hundred rows. The 108k box with
+    // CG: 53 iterations against 65 on one rank, 61 against 85 on two (the cut splits aggregates, and the
+    // coarse space carried the cost), solves 2.55 s against 2.8-3.1 and 1.65-1.77 against 1.93-2.07 s; the
+    // 311k box and the sphere deck at 27k on one and two ranks unchanged within noise. (doc/performance.md)
+    m.set("coarse: type", "CHEBYSHEV");
+    m.sublist("coarse: params").set("chebyshev: degree", 10);
   }
   return p;
 }
