@@ -91,8 +91,13 @@ ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc
 
 void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
   const std::vector<Real> force = disc_.interaction ? interactionNodeForces(x) : std::vector<Real>{};
-  const std::vector<Real> u = gather_.gather(x);  // dof = node * dim + i
+  const std::vector<Real> byDof = gather_.gather(x);  // by dof id
   if (!root_) return;
+  const auto& dofs = *disc_.dofs;
+  const int dim = dofs.dofsPerNode();
+  std::vector<Real> u(byDof.size());  // by mesh node: node * dim + i
+  for (LocalIndex n = 0; n < LocalIndex(u.size() / dim); ++n)
+    for (int i = 0; i < dim; ++i) u[std::size_t(n) * dim + i] = byDof[dofs.dof(n, i)];
   io::ExodusWriter::Fields nodal, element;
   displacementAndStress(u, nodal, element);
   if (disc_.interaction) traction(u, force, nodal);

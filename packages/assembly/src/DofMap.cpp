@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 #include "cgcm/core/Error.hpp"
 
@@ -70,8 +72,20 @@ std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPa
 
 DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode,
                CellPartition partition)
-    : comm_(comm), dofsPerNode_(dofsPerNode), cellOwner_(partitionCells(*comm, mesh, partition)) {
+    : comm_(comm),
+      dofsPerNode_(dofsPerNode),
+      cellOwner_(partitionCells(*comm, mesh, partition)),
+      nodeIds_(mesh.nodeIds),
+      numMeshNodes_(mesh.numNodes()) {
   const int rank = comm->getRank(), p = comm->getSize();
+  if (!nodeIds_.empty()) {
+    if (nodeIds_.size() != std::size_t(mesh.numNodes()))
+      throw std::logic_error("DofMap: the mesh has " + std::to_string(nodeIds_.size()) + " node ids for " +
+                             std::to_string(mesh.numNodes()) + " nodes");
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
+      if (nodeIds_[n] < 0 || !meshNodes_.emplace(nodeIds_[n], n).second)
+        throw std::logic_error("DofMap: node id " + std::to_string(nodeIds_[n]) + " is negative or repeated");
+  }
 
   nodeOwner_.assign(mesh.numNodes(), p);
   localCells_.resize(mesh.blocks.size());
@@ -94,19 +108,53 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
   for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
     if (nodeOwner_[n] == p) nodeOwner_[n] = 0;
 
-  std::vector<GlobalIndex> owned, overlap;
+  std::vector<GlobalIndex> ownedNodes, overlapNodes;
   for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
-    if (nodeOwner_[n] == rank)
-      for (int i = 0; i < dofsPerNode; ++i) owned.push_back(dof(n, i));
-  overlap = owned;
+    if (nodeOwner_[n] == rank) ownedNodes.push_back(globalNode(n));
+  overlapNodes = ownedNodes;
   for (LocalIndex n : touched)
-    if (nodeOwner_[n] != rank)
-      for (int i = 0; i < dofsPerNode; ++i) overlap.push_back(dof(n, i));
+    if (nodeOwner_[n] != rank) overlapNodes.push_back(globalNode(n));
+  auto dofsOf = [dofsPerNode](const std::vector<GlobalIndex>& nodes) {
+    std::vector<GlobalIndex> dofs;
+    dofs.reserve(nodes.size() * dofsPerNode);
+    for (GlobalIndex id : nodes)
+      for (int i = 0; i < dofsPerNode; ++i) dofs.push_back(id * dofsPerNode + i);
+    return dofs;
+  };
+  const std::vector<GlobalIndex> owned = dofsOf(ownedNodes), overlap = dofsOf(overlapNodes);
 
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   ownedMap_ = Teuchos::rcp(new Map(invalid, owned.data(), owned.size(), 0, comm));
   overlapMap_ = Teuchos::rcp(new Map(invalid, overlap.data(), overlap.size(), 0, comm));
   importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));
+  ownedNodeMap_ = Teuchos::rcp(new Map(invalid, ownedNodes.data(), ownedNodes.size(), 0, comm));
+  overlapNodeMap_ = Teuchos::rcp(new Map(invalid, overlapNodes.data(), overlapNodes.size(), 0, comm));
+  nodeImporter_ = Teuchos::rcp(new Import(ownedNodeMap_, overlapNodeMap_));
+  // Output and restart gather the dofs by id (0 .. n - 1); ids with gaps would lose some.
+  if (ownedMap_->getMaxAllGlobalIndex() + 1 != GlobalIndex(ownedMap_->getGlobalNumElements()))
+    throw std::logic_error("DofMap: the mesh's node ids are not 0 .. (number of nodes) - 1");
+}
+
+std::vector<Real> DofMap::sumOverSharers(const std::vector<Real>& perOverlapNode) const {
+  if (perOverlapNode.size() != overlapNodeMap_->getNodeNumElements())
+    throw std::logic_error("DofMap::sumOverSharers: one value per overlap node expected");
+  Vector local(overlapNodeMap_), total(ownedNodeMap_);
+  {
+    auto h = local.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t k = 0; k < perOverlapNode.size(); ++k) h(k, 0) = perOverlapNode[k];
+  }
+  total.doExport(local, *nodeImporter_, Tpetra::ADD);  // the import in reverse: sharers to owners
+  local.doImport(total, *nodeImporter_, Tpetra::INSERT);
+  auto h = local.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<Real> sum(perOverlapNode.size());
+  for (std::size_t k = 0; k < sum.size(); ++k) sum[k] = h(k, 0);
+  return sum;
+}
+
+LocalIndex DofMap::meshNode(GlobalIndex id) const {
+  if (nodeIds_.empty()) return id >= 0 && id < numMeshNodes_ ? LocalIndex(id) : -1;
+  const auto it = meshNodes_.find(id);
+  return it == meshNodes_.end() ? -1 : it->second;
 }
 
 Teuchos::RCP<MultiVector> rigidBodyModes(const DofMap& dofs, const mesh::Mesh& mesh, Formulation formulation) {
@@ -115,14 +163,19 @@ Teuchos::RCP<MultiVector> rigidBodyModes(const DofMap& dofs, const mesh::Mesh& m
   const int numModes = dim == 3 ? 6 : 3;
   auto modes = Teuchos::rcp(new MultiVector(dofs.ownedMap(), numModes));
   // About the centroid, so that the rotations are not dominated by a translation.
-  Real centre[3] = {0.0, 0.0, 0.0};
-  for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
-    for (int i = 0; i < dim; ++i) centre[i] += mesh.coord(n, i) / Real(mesh.numNodes());
-  auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
   const Map& map = *dofs.ownedMap();
+  Real sum[3] = {0.0, 0.0, 0.0}, centre[3] = {0.0, 0.0, 0.0};
   for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
     const GlobalIndex gid = map.getGlobalElement(LocalIndex(lid));
-    const auto node = LocalIndex(gid / dim);
+    sum[gid % dim] += mesh.coord(dofs.meshNodeOfDof(gid), int(gid % dim));
+  }
+  Teuchos::reduceAll(*dofs.comm(), Teuchos::REDUCE_SUM, dim, sum, centre);
+  const auto numNodes = Real(map.getGlobalNumElements() / std::size_t(dim));
+  for (int i = 0; i < dim; ++i) centre[i] /= numNodes;
+  auto v = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+    const GlobalIndex gid = map.getGlobalElement(LocalIndex(lid));
+    const LocalIndex node = dofs.meshNodeOfDof(gid);
     const int c = int(gid % dim);
     Real x[3] = {0.0, 0.0, 0.0};
     for (int i = 0; i < dim; ++i) x[i] = mesh.coord(node, i) - centre[i];

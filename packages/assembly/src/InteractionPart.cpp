@@ -17,14 +17,20 @@ ReplicatedCoordinates::ReplicatedCoordinates(const DofMap& dofs, const mesh::Mes
   map_ = Teuchos::rcp(new Map(invalid, gids.data(), gids.size(), 0, dofs.comm()));
   import_ = Teuchos::rcp(new Import(dofs.ownedMap(), map_));
   values_ = Teuchos::rcp(new Vector(map_));
+  const int dim = dofs.dofsPerNode();
+  coordOfValue_.resize(gids.size());
+  for (std::size_t lid = 0; lid < gids.size(); ++lid) {
+    const GlobalIndex gid = map_->getGlobalElement(LocalIndex(lid));
+    coordOfValue_[lid] = std::size_t(dofs.meshNodeOfDof(gid)) * dim + std::size_t(gid % dim);
+  }
 }
 
 const std::vector<Real>& ReplicatedCoordinates::update(const Vector& u) {
   values_->doImport(u, *import_, Tpetra::INSERT);
   auto v = values_->getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (std::size_t lid = 0; lid < map_->getNodeNumElements(); ++lid) {
-    const GlobalIndex gid = map_->getGlobalElement(LocalIndex(lid));
-    coords_[gid] = mesh_->coords[gid] + v(lid, 0);  // dof gid = node * dim + i = coordinate index
+  for (std::size_t lid = 0; lid < coordOfValue_.size(); ++lid) {
+    const std::size_t k = coordOfValue_[lid];
+    coords_[k] = mesh_->coords[k] + v(lid, 0);
   }
   return coords_;
 }

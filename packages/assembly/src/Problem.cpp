@@ -64,21 +64,19 @@ void Problem::findCellNeighbours() {
   const std::size_t numOverlapNodes = overlap.getNodeNumElements() / dim_;
   cellNeighbours_.assign(numOverlapNodes, {});
   for (const auto& part : bulk_) part.appendCellNeighbours(cellNeighbours_);
-  // Other ranks' cells at a shared node add at most the nodes of every mesh cell there (each rank holds the
-  // whole mesh) less those of this rank's cells.
-  std::vector<long long> cellNodes(mesh_->numNodes(), 0);
-  for (const auto& block : mesh_->blocks) {
-    const int npc = mesh::nodesPerCell(block.type);
-    for (LocalIndex n : block.connectivity) cellNodes[n] += npc;
-  }
+  // Other ranks' cells at a shared node add at most the nodes of their cells there: the node's cell-node
+  // incidences summed over the ranks that have it, less this rank's (its list before removing repeats).
+  std::vector<Real> here(numOverlapNodes);
+  for (std::size_t k = 0; k < numOverlapNodes; ++k) here[k] = Real(cellNeighbours_[k].size());
+  const std::vector<Real> all = dofs_->sumOverSharers(here);
   remoteCellNodes_.assign(numOverlapNodes, 0);
   for (std::size_t k = 0; k < numOverlapNodes; ++k) {
     auto& list = cellNeighbours_[k];
-    const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(k * dim_)) / dim_);
-    remoteCellNodes_[k] = std::max(0LL, cellNodes[node] - (long long)list.size());
+    remoteCellNodes_[k] = std::max(0LL, (long long)std::llround(all[k] - here[k]));
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
+  cellNeighboursFound_ = true;
 }
 
 void Problem::buildGraph() {
@@ -86,22 +84,23 @@ void Problem::buildGraph() {
   // Node by node: the nodes each overlap node couples with (its cells' nodes, found once, and its
   // interaction partners), then one insertion per row. Inserting cell by cell and pair by pair, into rows
   // all as long as the longest, cost 2-3 s per build of a 27k-unknown tetrahedral graph (doc/performance.md).
-  if (cellNeighbours_.empty()) findCellNeighbours();
+  if (!cellNeighboursFound_) findCellNeighbours();
   const Map& overlap = *dofs_->overlapMap();
   const std::size_t numOverlapNodes = cellNeighbours_.size();
   std::vector<std::vector<LocalIndex>> partners(numOverlapNodes);  // mesh node ids
+  std::vector<Real> partnersHere(numOverlapNodes, 0.0);
   for (const auto& [r, c] : extraCouplings_) {
     const LocalIndex row = overlap.getLocalElement(dofs_->dof(r, 0));
     if (row == Teuchos::OrdinalTraits<LocalIndex>::invalid())
-      throw std::logic_error("interaction coupling row node " + std::to_string(r) + " is not on this rank");
+      throw std::logic_error("interaction coupling row node " + std::to_string(dofs_->globalNode(r)) +
+                             " is not on this rank");
     partners[row / dim_].push_back(c);
+    partnersHere[row / dim_] += 1.0;
   }
   // Row lengths: this rank's couplings exactly, plus a bound on what other ranks add to a shared row at the
   // end of assembly: their cells' nodes and their interaction partners of the node.
-  const LocalIndex numNodes = mesh_->numNodes();
-  std::vector<long long> extraHere(numNodes, 0), extra(numNodes, 0);
-  for (const auto& [r, c] : extraCouplings_) ++extraHere[r];
-  Teuchos::reduceAll(*dofs_->comm(), Teuchos::REDUCE_SUM, int(numNodes), extraHere.data(), extra.data());
+  const std::vector<Real> partnersAll = dofs_->sumOverSharers(partnersHere);
+  const auto numDofs = (long long)dofs_->ownedMap()->getGlobalNumElements();
   Kokkos::DualView<std::size_t*, Graph::device_type> rowLengths("rowLengths", overlap.getNodeNumElements());
   std::vector<std::vector<GlobalIndex>> columns(numOverlapNodes);
   {
@@ -115,10 +114,8 @@ void Problem::buildGraph() {
         for (int j = 0; j < dim_; ++j) cols.push_back(dofs_->dof(c, j));
       std::sort(cols.begin(), cols.end());
       cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
-      const auto node = LocalIndex(overlap.getGlobalElement(LocalIndex(k * dim_)) / dim_);
-      const long long remote = remoteCellNodes_[k] + (extra[node] - extraHere[node]);
-      const auto length =
-          std::size_t(std::min<long long>((long long)cols.size() + remote * dim_, (long long)numNodes * dim_));
+      const long long remote = remoteCellNodes_[k] + std::llround(partnersAll[k] - partnersHere[k]);
+      const auto length = std::size_t(std::min<long long>((long long)cols.size() + remote * dim_, numDofs));
       for (int i = 0; i < dim_; ++i) lengths(k * dim_ + i) = length;
     }
     rowLengths.modify_host();

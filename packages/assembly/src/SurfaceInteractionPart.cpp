@@ -76,8 +76,8 @@ InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const
       const Real zero = 0.0;  // probe the columns one by one for the first that is missing
       for (int k = 0; k < ncols; ++k)
         if (lclJ.sumIntoValues(rows[r], &cols[k], 1, &zero, sortedRows, true) == 0) {
-          out.firstDropped = "row node " + std::to_string(c.rowNodes[r / dim_]) + ", column node " +
-                             std::to_string(c.colNodes[k / dim_]);
+          out.firstDropped = "row node " + std::to_string(dofs_->globalNode(c.rowNodes[r / dim_])) +
+                             ", column node " + std::to_string(dofs_->globalNode(c.colNodes[k / dim_]));
           break;
         }
     }

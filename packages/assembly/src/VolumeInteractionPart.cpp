@@ -99,11 +99,12 @@ InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const 
   Outcome out;
   out.dropped = dropped(0);
   if (firstMissing(0) > 0)
-    out.firstDropped = "row node " + std::to_string(firstMissing(0) - 1) + ", column node " +
-                       std::to_string(firstMissing(1) - 1);
+    out.firstDropped = "row node " + std::to_string(dofs_->globalNode(firstMissing(0) - 1)) + ", column node " +
+                       std::to_string(dofs_->globalNode(firstMissing(1) - 1));
   if (nonFinite(0) > 0)
     out.failure = "volume pair interaction: a non-finite force between the cells of nodes " +
-              std::to_string(nonFinite(0) - 1) + " and " + std::to_string(nonFinite(1) - 1) +
+              std::to_string(dofs_->globalNode(nonFinite(0) - 1)) + " and " +
+              std::to_string(dofs_->globalNode(nonFinite(1) - 1)) +
               " (their quadrature points coincide: the bodies interpenetrate)";
   return out;
 }

@@ -7,6 +7,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <stdexcept>
 
 #include "cgcm/core/Error.hpp"
 
@@ -124,6 +125,8 @@ Mesh box(const BoxSpec& s) {
 
 void append(Mesh& mesh, const Mesh& other, const std::string& prefix) {
   if (mesh.dim != other.dim) throw InputError("cannot append a mesh of another dimension");
+  if (!mesh.nodeIds.empty() || !other.nodeIds.empty())
+    throw std::logic_error("mesh::append: meshes with their own node ids are distributed parts, not built");
   const LocalIndex offset = mesh.numNodes();
   const int bodyOffset = mesh.numBodies;
   mesh.coords.insert(mesh.coords.end(), other.coords.begin(), other.coords.end());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "cgcm/core/Error.hpp"
@@ -23,6 +24,7 @@ const std::vector<int>& reflectedOrder(int nodes, bool facet, int dim) {
 
 void mirror(Mesh& mesh, int axis, Real tolerance) {
   if (axis < 0 || axis >= mesh.dim) throw InputError("mirror plane axis out of range");
+  if (!mesh.nodeIds.empty()) throw std::logic_error("mesh::mirror: a mesh with its own node ids is a distributed part");
   const char name = "xyz"[axis];
   const LocalIndex nn = mesh.numNodes();
   Real extent = 0.0;

@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "ClosedForm.hpp"
 #include "cgcm/app/Setup.hpp"
+#include "cgcm/app/Results.hpp"
 #include "cgcm/app/Simulation.hpp"
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/io/ExodusReader.hpp"
@@ -144,6 +146,45 @@ TEST(Results, InteractionTractionPressesWhereTheBodiesTouch) {
   // the displacement of the driven equator is -u (the sphere's equator plane moves down by u)
   const auto uy = r.nodal("displacement_y", last);
   for (LocalIndex n : mesh->nodeSet("equator")) EXPECT_NEAR(uy[std::size_t(n)], -run.curve.back().u, 1e-14);
+}
+
+// The fields are written by mesh node whatever global ids the nodes carry: a homogeneous stretch of a
+// block whose nodes have shuffled ids reads back node by node, with the homogeneous J in every cell.
+TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
+  const std::string dir = std::string(CGCM_TEST_OUTPUT) + "/results-node-ids";
+  auto d = deck({"Problem/Formulation=3D", "Geometry/Type=block", "Geometry/Block/Cells X=2",
+                 "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=2", "Output/Directory=" + dir});
+  auto setup = app::buildProblem(*d);
+  auto& mesh = *setup.mesh;
+  mesh.nodeIds.resize(std::size_t(mesh.numNodes()));
+  for (LocalIndex n = 0; n < mesh.numNodes(); ++n) mesh.nodeIds[std::size_t(n)] = mesh.numNodes() - 1 - n;
+  const auto disc = app::discretize(Tpetra::getDefaultComm(), setup, d->sublist("Solver").sublist("Linear Solver"));
+  const double stretch[3] = {0.01, 0.02, -0.03};
+  assembly::Vector x(disc.dofs->ownedMap());
+  {
+    auto h = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto& map = *disc.dofs->ownedMap();
+    for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+      const GlobalIndex dof = map.getGlobalElement(LocalIndex(lid));
+      const int i = int(dof % 3);
+      h(lid, 0) = stretch[i] * mesh.coord(disc.dofs->meshNodeOfDof(dof), i);
+    }
+  }
+  std::filesystem::create_directories(dir);
+  {
+    app::ResultsWriter writer(dir + "/results.e", disc, {"u"});
+    writer.write(x, {0.0});
+  }
+  if (Tpetra::getDefaultComm()->getRank() != 0) return;
+  const io::ExodusReader r(dir + "/results.e");
+  ASSERT_EQ(r.numSteps(), 1);
+  const char* names[3] = {"displacement_x", "displacement_y", "displacement_z"};
+  for (int i = 0; i < 3; ++i) {
+    const auto u = r.nodal(names[i], 1);
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
+      ASSERT_NEAR(u[std::size_t(n)], stretch[i] * mesh.coord(n, i), 1e-15) << names[i] << " node " << n;
+  }
+  for (double J : r.element("J", 1)) EXPECT_NEAR(J, 1.01 * 1.02 * 0.97, 1e-13);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -308,6 +309,100 @@ TEST(Problem, IsTheSumOfItsParts) {
   EXPECT_EQ(bulk.interaction(), nullptr);
   EXPECT_TRUE(bulk.interactionForces().empty());
   EXPECT_EQ(bulk.searchRadius(), 0.0);
+}
+
+// What one evaluation of the two boxes with Method 3 gives, indexed by mesh node (node * 3 + i), gathered
+// over the ranks: the residual, the tangent (dense), the rigid-body modes and the forces on the bodies.
+struct ByMeshNode {
+  std::vector<Real> f, J, modes;
+  std::vector<std::array<Real, 3>> forces;
+};
+
+ByMeshNode evaluateByMeshNode(const std::shared_ptr<mesh::Mesh>& m, const std::vector<Real>& u) {
+  auto comm = Tpetra::getDefaultComm();
+  auto dofs = Teuchos::rcp(new DofMap(comm, *m, 3));
+  Problem p(dofs, m, Formulation::ThreeD, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
+  p.setInteraction(methodThree(*m), 1.5);
+  const Map& owned = *dofs->ownedMap();
+  const std::size_t n = u.size(), numOwned = owned.getNodeNumElements();
+  auto index = [&](GlobalIndex dof) { return std::size_t(dofs->meshNodeOfDof(dof)) * 3 + std::size_t(dof % 3); };
+  Vector uv(dofs->ownedMap()), fv(dofs->ownedMap());
+  {
+    auto h = uv.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t lid = 0; lid < numOwned; ++lid) h(lid, 0) = u[index(owned.getGlobalElement(LocalIndex(lid)))];
+  }
+  EXPECT_TRUE(p.updateInteractionGraph(uv));
+  auto J = p.createMatrix();
+  p.evaluate(uv, fv, J.get());
+  const auto modes = rigidBodyModes(*dofs, *m, Formulation::ThreeD);
+  std::vector<Real> f(n, 0.0), K(n * n, 0.0), R(6 * n, 0.0);
+  auto fh = fv.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto mh = modes->getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t lid = 0; lid < numOwned; ++lid) {
+    const std::size_t row = index(owned.getGlobalElement(LocalIndex(lid)));
+    f[row] = fh(lid, 0);
+    for (int k = 0; k < 6; ++k) R[6 * row + k] = mh(lid, k);
+    Matrix::nonconst_local_inds_host_view_type cols("cols", J->getNumEntriesInLocalRow(LocalIndex(lid)));
+    Matrix::nonconst_values_host_view_type vals("vals", cols.extent(0));
+    std::size_t count = 0;
+    J->getLocalRowCopy(LocalIndex(lid), cols, vals, count);
+    for (std::size_t k = 0; k < count; ++k) K[row * n + index(J->getColMap()->getGlobalElement(cols(k)))] += vals(k);
+  }
+  ByMeshNode out{std::vector<Real>(n), std::vector<Real>(n * n), std::vector<Real>(6 * n), p.interactionForces()};
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(n), f.data(), out.f.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(n * n), K.data(), out.J.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(6 * n), R.data(), out.modes.data());
+  return out;
+}
+
+Real maxAbsDifference(const std::vector<Real>& a, const std::vector<Real>& b, Real& scale) {
+  Real worst = 0.0;
+  scale = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+    scale = std::max(scale, std::abs(a[i]));
+  }
+  return worst;
+}
+
+// A node's global id only labels its dofs: the two boxes with their nodes given shuffled ids give, node by
+// node, the residual, tangent, interaction forces and rigid-body modes of the plain numbering (1 and 2 ranks).
+TEST(DofMap, NodeIdsOnlyLabelTheDofs) {
+  auto plain = twoBoxes(0.3);
+  auto shuffled = std::make_shared<mesh::Mesh>(*plain);
+  shuffled->nodeIds.resize(plain->numNodes());
+  std::iota(shuffled->nodeIds.begin(), shuffled->nodeIds.end(), GlobalIndex(0));
+  std::shuffle(shuffled->nodeIds.begin(), shuffled->nodeIds.end(), std::mt19937(3));
+  ASSERT_NE(shuffled->nodeIds.front(), 0);
+  const auto u = randomDisplacement(3 * std::size_t(plain->numNodes()), 0.02, 19);
+  const ByMeshNode a = evaluateByMeshNode(plain, u), b = evaluateByMeshNode(shuffled, u);
+  Real fScale = 0.0, jScale = 0.0, modeScale = 0.0;
+  const Real fDiff = maxAbsDifference(a.f, b.f, fScale), jDiff = maxAbsDifference(a.J, b.J, jScale),
+             modeDiff = maxAbsDifference(a.modes, b.modes, modeScale);
+  EXPECT_LE(fDiff, 1e-13 * fScale);
+  EXPECT_LE(jDiff, 1e-13 * jScale);
+  EXPECT_LE(modeDiff, 1e-14 * modeScale);
+  ASSERT_EQ(a.forces.size(), 2u);
+  ASSERT_EQ(b.forces.size(), 2u);
+  EXPECT_GT(a.forces[0][2], 0.0);  // the interaction is there
+  for (int body = 0; body < 2; ++body)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(b.forces[body][i], a.forces[body][i], 1e-13 * std::abs(a.forces[0][2]));
+  std::printf("[node ids] shuffled against plain: |df| %.1e of %.1e, |dJ| %.1e of %.1e, %d rank(s)\n", fDiff, fScale,
+              jDiff, jScale, Tpetra::getDefaultComm()->getSize());
+}
+
+TEST(DofMap, NodeIdsAreCheckedForRepeatsAndGaps) {
+  auto comm = Tpetra::getDefaultComm();
+  auto m = twoBoxes(0.3);
+  m->nodeIds.resize(m->numNodes());
+  std::iota(m->nodeIds.begin(), m->nodeIds.end(), GlobalIndex(0));
+  m->nodeIds[5] = m->nodeIds[4];  // repeated
+  EXPECT_THROW(DofMap(comm, *m, 3), std::logic_error);
+  std::iota(m->nodeIds.begin(), m->nodeIds.end(), GlobalIndex(0));
+  m->nodeIds.back() += 10;  // a gap: output gathers by id
+  EXPECT_THROW(DofMap(comm, *m, 3), std::logic_error);
+  m->nodeIds.pop_back();  // not one per node
+  EXPECT_THROW(DofMap(comm, *m, 3), std::logic_error);
 }
 
 }  // namespace

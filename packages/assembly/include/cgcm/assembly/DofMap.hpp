@@ -7,8 +7,12 @@
 // tangent): compact parts with short interfaces, whatever order the mesh
 // generator numbered the cells in. Contiguous: ranges of the mesh-wide
 // numbering. A node is owned by the lowest rank whose cells touch it.
-// Degree of freedom (node n, component i) has global index n * dofsPerNode + i.
+// Nodes are named two ways: by their index in the mesh (the arrays of this
+// rank) and by their global id (mesh::Mesh::globalNode, the label shared by
+// the ranks). Degree of freedom (node n, component i) has global index
+// globalNode(n) * dofsPerNode + i.
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "cgcm/assembly/Formulation.hpp"
@@ -33,6 +37,11 @@ class DofMap {
   /// Owned dofs first, then the dofs of ghost nodes touched by local cells.
   const Teuchos::RCP<const Map>& overlapMap() const { return overlapMap_; }
   const Teuchos::RCP<const Import>& ownedToOverlap() const { return importer_; }
+  /// The same distribution per node (global node ids, overlap node k = overlap dofs k * dofsPerNode + i).
+  const Teuchos::RCP<const Map>& ownedNodeMap() const { return ownedNodeMap_; }
+  const Teuchos::RCP<const Map>& overlapNodeMap() const { return overlapNodeMap_; }
+  /// Per overlap node, the sum of `perOverlapNode` over every rank whose overlap has the node. Collective.
+  std::vector<Real> sumOverSharers(const std::vector<Real>& perOverlapNode) const;
 
   /// Cells evaluated by this rank, per element block (block-local cell indices).
   const std::vector<LocalIndex>& localCells(std::size_t block) const { return localCells_[block]; }
@@ -40,18 +49,25 @@ class DofMap {
   int cellOwner(LocalIndex cell) const { return cellOwner_[cell]; }
   bool ownsNode(LocalIndex node) const { return nodeOwner_[node] == comm_->getRank(); }
   int nodeOwner(LocalIndex node) const { return nodeOwner_[node]; }
-  GlobalIndex dof(LocalIndex node, int component) const {
-    return GlobalIndex(node) * dofsPerNode_ + component;
-  }
+  /// The global id of mesh node `node`.
+  GlobalIndex globalNode(LocalIndex node) const { return nodeIds_.empty() ? GlobalIndex(node) : nodeIds_[node]; }
+  /// The mesh node with global id `id`, or -1 if this rank's mesh has none.
+  LocalIndex meshNode(GlobalIndex id) const;
+  /// The mesh node of a dof's global index (-1 if this rank's mesh has none).
+  LocalIndex meshNodeOfDof(GlobalIndex dof) const { return meshNode(dof / dofsPerNode_); }
+  GlobalIndex dof(LocalIndex node, int component) const { return globalNode(node) * dofsPerNode_ + component; }
 
  private:
   Teuchos::RCP<const Comm> comm_;
   int dofsPerNode_;
   std::vector<int> cellOwner_;  ///< [mesh-wide cell]
   std::vector<int> nodeOwner_;
+  std::vector<GlobalIndex> nodeIds_;                     ///< the mesh's, empty for node n = id n
+  std::unordered_map<GlobalIndex, LocalIndex> meshNodes_;  ///< inverse of nodeIds_ where it is not empty
+  LocalIndex numMeshNodes_ = 0;
   std::vector<std::vector<LocalIndex>> localCells_;
-  Teuchos::RCP<const Map> ownedMap_, overlapMap_;
-  Teuchos::RCP<const Import> importer_;
+  Teuchos::RCP<const Map> ownedMap_, overlapMap_, ownedNodeMap_, overlapNodeMap_;
+  Teuchos::RCP<const Import> importer_, nodeImporter_;
 };
 
 /// The rigid-body motions of the reference configuration on the owned dofs:
@@ -59,7 +75,7 @@ class DofMap {
 /// needs to build good coarse spaces. 3D: three translations and three
 /// rotations; plane strain: two translations and the in-plane rotation.
 /// Axisymmetric: null (only the axial translation is rigid; MueLu's default
-/// of one unit vector per component is then as good).
+/// of one unit vector per component is then as good). Collective.
 Teuchos::RCP<MultiVector> rigidBodyModes(const DofMap& dofs, const mesh::Mesh& mesh, Formulation formulation);
 
 }  // namespace cgcm::assembly

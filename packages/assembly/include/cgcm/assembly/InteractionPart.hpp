@@ -67,6 +67,7 @@ class ReplicatedCoordinates {
   Teuchos::RCP<const Map> map_;
   Teuchos::RCP<const Import> import_;
   Teuchos::RCP<Vector> values_;
+  std::vector<std::size_t> coordOfValue_;  ///< per entry of values_: its index in coords_ (mesh node * dim + i)
   std::vector<Real> coords_;
 };
 

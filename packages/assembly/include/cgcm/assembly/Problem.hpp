@@ -144,6 +144,7 @@ class Problem {
   /// (sorted, unique), and a bound on the nodes other ranks' cells add to it.
   std::vector<std::vector<LocalIndex>> cellNeighbours_;
   std::vector<long long> remoteCellNodes_;
+  bool cellNeighboursFound_ = false;  ///< on every rank at once (finding them is collective)
   Teuchos::RCP<Graph> graph_;
   int graphVersion_ = 0;  ///< incremented on every rebuild: cached column ids follow it
   int columnsVersion_ = -1;

@@ -3,7 +3,9 @@
 //
 // The mesh is replicated on every MPI rank (research-size problems); the
 // distribution of degrees of freedom and the element partition are made by
-// the assembly package. Node indices are global and 0-based.
+// the assembly package. Node indices are 0-based indices into this mesh's
+// arrays; a node's global id, which labels its degrees of freedom across the
+// ranks, is its index unless `nodeIds` says otherwise.
 #include <map>
 #include <string>
 #include <vector>
@@ -54,12 +56,16 @@ struct Mesh {
   std::map<std::string, std::vector<LocalIndex>> nodeSets;  ///< sorted, unique node indices
   std::vector<Surface> surfaces;  ///< one per body, index = body id
   int numBodies = 1;
+  /// Global id of each node: its dofs are id * dofsPerNode + component. Empty: node n has id n
+  /// (what the generators and readers make). Over all ranks the ids are 0 .. (nodes of the whole mesh) - 1.
+  std::vector<GlobalIndex> nodeIds;
 
   LocalIndex numNodes() const { return LocalIndex(coords.size() / dim); }
   LocalIndex numCells() const;
   /// Mesh-wide index of the first cell of block b (cells are numbered block after block).
   LocalIndex firstCellOfBlock(std::size_t b) const;
   Real coord(LocalIndex node, int i) const { return coords[std::size_t(node) * dim + i]; }
+  GlobalIndex globalNode(LocalIndex node) const { return nodeIds.empty() ? GlobalIndex(node) : nodeIds[node]; }
   /// Node set by name; throws InputError listing the available names.
   const std::vector<LocalIndex>& nodeSet(const std::string& name) const;
 };
