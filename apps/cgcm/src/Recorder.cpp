@@ -55,7 +55,7 @@ Real ContactProbe::contactRadius(const Vector& u) const {
 Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe,
                    const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
                    const Checkpoint* resume)
-    : setup_(setup), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
+    : setup_(setup), mesh_(*disc.mesh), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
       root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log), f_(disc.model->map()) {
   columns_ = {"step", "u"};
   if (parameterIndex_ > 0) columns_.push_back(model_.parameterNames()[parameterIndex_]);
@@ -74,13 +74,15 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
     createOnRoot(*disc.dofs->comm(), [&] {
       bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
-  if (exodus) results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, columns_, resume ? resume->exodusSteps : -1);
+  if (exodus)
+    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", *setup.mesh, disc, columns_,
+                                               resume ? resume->exodusSteps : -1);
 }
 
 void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
   model_.evaluateUnconstrained(x, p, f_);
   auto resultant = [&](const ForceResponse& r) {  // collective
-    const auto& nodes = setup_.mesh->nodeSet(r.nodeSet);
+    const auto& nodes = mesh_.nodeSet(r.nodeSet);
     if (r.direction.empty()) return r.sign * r.scale * model_.problem().sumOverNodes(f_, nodes, r.component);
     Real sum = 0.0;
     for (std::size_t i = 0; i < r.direction.size(); ++i)

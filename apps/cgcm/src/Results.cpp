@@ -69,10 +69,13 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
   throw InputError(error);
 }
 
-ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc,
+ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh& mesh, const Discretization& disc,
                              const std::vector<std::string>& globals, int keptSteps)
-    : disc_(disc), globals_(globals), root_(disc.dofs->comm()->getRank() == 0), gather_(disc.dofs->ownedMap()) {
-  const auto& mesh = disc.problem->mesh();
+    : mesh_(mesh),
+      disc_(disc),
+      globals_(globals),
+      root_(disc.dofs->comm()->getRank() == 0),
+      gather_(disc.dofs->ownedMap()) {
   io::ExodusVariables vars;
   for (int i = 0; i < mesh.dim; ++i) vars.nodal.push_back(kDisplacement[i]);
   if (disc.interaction) {
@@ -90,14 +93,10 @@ ResultsWriter::ResultsWriter(const std::string& path, const Discretization& disc
 }
 
 void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
-  const std::vector<Real> force = disc_.interaction ? interactionNodeForces(x) : std::vector<Real>{};
-  const std::vector<Real> byDof = gather_.gather(x);  // by dof id
+  const std::vector<Real> forceByNode = disc_.interaction ? interactionNodeForces(x) : std::vector<Real>{};
+  const std::vector<Real> uByNode = gather_.gather(x);  // by dof id = global node id * dim + i
   if (!root_) return;
-  const auto& dofs = *disc_.dofs;
-  const int dim = dofs.dofsPerNode();
-  std::vector<Real> u(byDof.size());  // by mesh node: node * dim + i
-  for (LocalIndex n = 0; n < LocalIndex(u.size() / dim); ++n)
-    for (int i = 0; i < dim; ++i) u[std::size_t(n) * dim + i] = byDof[dofs.dof(n, i)];
+  const std::vector<Real> u = inMeshOrder(uByNode), force = inMeshOrder(forceByNode);
   io::ExodusWriter::Fields nodal, element;
   displacementAndStress(u, nodal, element);
   if (disc_.interaction) traction(u, force, nodal);
@@ -106,9 +105,18 @@ void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& 
   writer_->writeStep(writer_->numSteps() + 1, nodal, element, scalars);
 }
 
+std::vector<Real> ResultsWriter::inMeshOrder(const std::vector<Real>& byGlobalNode) const {
+  if (byGlobalNode.empty()) return {};
+  const int dim = mesh_.dim;
+  std::vector<Real> out(std::size_t(mesh_.numNodes()) * dim);
+  for (LocalIndex n = 0; n < mesh_.numNodes(); ++n)
+    for (int i = 0; i < dim; ++i) out[std::size_t(n) * dim + i] = byGlobalNode[std::size_t(mesh_.globalNode(n)) * dim + i];
+  return out;
+}
+
 void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
                                           io::ExodusWriter::Fields& element) const {
-  const auto& mesh = disc_.problem->mesh();
+  const auto& mesh = mesh_;
   const int dim = mesh.dim;
   for (int i = 0; i < dim; ++i) {
     auto& d = nodal[kDisplacement[i]];
@@ -151,12 +159,15 @@ std::vector<Real> ResultsWriter::interactionNodeForces(const assembly::Vector& x
   const auto& in = *disc_.interaction;
   const int d = in.dim();
   const std::vector<Real>& coords = disc_.problem->currentCoordinates(x);  // every surface node
-  std::vector<Real> local(d * std::size_t(disc_.problem->mesh().numNodes()), 0.0), force(local.size(), 0.0);
+  const auto& dofs = *disc_.dofs;
+  // by global node id: the ranks' meshes number their nodes each their own way
+  std::vector<Real> local(dofs.ownedMap()->getGlobalNumElements(), 0.0), force(local.size(), 0.0);
   interaction::PairContribution c;
   for (const auto& p : in.pairs()) {
     in.evaluatePair(coords.data(), p, c, false);
     for (int a = 0; a < c.numRowNodes; ++a)
-      for (int i = 0; i < d; ++i) local[d * std::size_t(c.rowNodes[a]) + i] -= c.f[d * a + i];  // on the body: -f_C
+      for (int i = 0; i < d; ++i)
+        local[d * std::size_t(dofs.globalNode(c.rowNodes[a])) + i] -= c.f[d * a + i];  // on the body: -f_C
   }
   Teuchos::reduce(local.data(), force.data(), int(local.size()), Teuchos::REDUCE_SUM, 0, *disc_.dofs->comm());
   return force;
@@ -164,10 +175,13 @@ std::vector<Real> ResultsWriter::interactionNodeForces(const assembly::Vector& x
 
 void ResultsWriter::traction(const std::vector<Real>& u, const std::vector<Real>& force,
                              io::ExodusWriter::Fields& nodal) const {
-  const auto& mesh = disc_.problem->mesh();
+  const auto& mesh = mesh_;
   const auto& in = *disc_.interaction;
   const int d = in.dim();
   const LocalIndex nn = mesh.numNodes();
+  // the interaction's surfaces name the nodes of the mesh this rank assembles; the fields are on mesh_
+  std::vector<LocalIndex> nodeOfId(std::size_t(nn), -1);
+  for (LocalIndex n = 0; n < nn; ++n) nodeOfId[std::size_t(mesh.globalNode(n))] = n;
   std::vector<Real> x(mesh.coords);
   for (std::size_t k = 0; k < x.size(); ++k) x[k] += u[k];
   std::vector<Real> area(nn, 0.0), normal(d * std::size_t(nn), 0.0);
@@ -176,7 +190,8 @@ void ResultsWriter::traction(const std::vector<Real>& u, const std::vector<Real>
     const auto& s = in.surface(b);
     const int npf = s.nodesPerFacet;
     for (LocalIndex f = 0; f < s.numFacets(); ++f) {
-      const LocalIndex* n = &s.facets[std::size_t(f) * npf];
+      LocalIndex n[4];
+      for (int a = 0; a < npf; ++a) n[a] = nodeOfId[std::size_t(disc_.dofs->globalNode(s.facets[std::size_t(f) * npf + a]))];
       if (d == 2) {
         const Real tx = x[2 * n[1]] - x[2 * n[0]], ty = x[2 * n[1] + 1] - x[2 * n[0] + 1];
         const Real length = std::hypot(tx, ty);

@@ -16,6 +16,7 @@
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
+#include "cgcm/mesh/LocalPart.hpp"
 #include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
@@ -827,28 +828,51 @@ ProblemSetup buildProblem(const ParameterList& deck) {
 
 namespace {
 
-Discretization discretize(const Teuchos::RCP<assembly::DofMap>& dofs, const ProblemSetup& setup,
+// The mesh a rank assembles and its dofs (Discretization::mesh).
+struct Distribution {
+  std::shared_ptr<const mesh::Mesh> mesh;
+  Teuchos::RCP<assembly::DofMap> dofs;
+};
+
+Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup) {
+  const int dim = assembly::formulationDim(setup.formulation);
+  const bool volumeMethod = setup.interaction && setup.interaction->volumeMethod;
+  if (comm->getSize() == 1 || volumeMethod)
+    return {setup.mesh, Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim, setup.partition))};
+  const auto owners = assembly::partitionCells(*comm, *setup.mesh, setup.partition);
+  std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
+  if (setup.contact)
+    for (const auto& name : {setup.contact->upperApex, setup.contact->lowerApex}) {
+      const auto& nodes = setup.mesh->nodeSet(name);
+      probed.insert(probed.end(), nodes.begin(), nodes.end());
+    }
+  auto part = std::make_shared<const mesh::Mesh>(mesh::localPart(*setup.mesh, owners, comm->getRank(), probed));
+  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *part, dim, assembly::CellPartition::LocalPart));
+  return {std::move(part), std::move(dofs)};
+}
+
+Discretization discretize(const Distribution& dist, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
   Discretization d;
-  d.dofs = dofs;
+  d.mesh = dist.mesh;
+  d.dofs = dist.dofs;
   d.problem = setup.bodyMaterials.empty()
-                    ? std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.material)
-                    : std::make_shared<assembly::Problem>(d.dofs, setup.mesh, setup.formulation, setup.bodyMaterials);
+                    ? std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.material)
+                    : std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.bodyMaterials);
   if (setup.interaction) {
     const auto& in = *setup.interaction;
     if (in.volumeMethod) {
-      d.volumeInteraction = std::make_shared<interaction::VolumeInteraction>(*setup.mesh, in.densities, in.potential,
+      d.volumeInteraction = std::make_shared<interaction::VolumeInteraction>(*d.mesh, in.densities, in.potential,
                                                                              in.volumeOptions);
       d.problem->setInteraction(d.volumeInteraction, in.searchRadiusFactor);
     } else {
-      d.interaction = std::make_shared<interaction::SurfaceInteraction>(setup.mesh->surfaces, in.densities,
+      d.interaction = std::make_shared<interaction::SurfaceInteraction>(d.mesh->surfaces, in.densities,
                                                                         in.potential, in.options);
       d.problem->setInteraction(d.interaction, in.searchRadiusFactor);
     }
   }
   d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
-  for (const auto& c : setup.conditions)
-    d.dirichlet->add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+  for (const auto& c : setup.conditions) d.dirichlet->add(d.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
   std::vector<solver::ScalarParameter> parameters;
   if (setup.interaction) {
     // gammaW = Y / (beta0^2 r0^3 epsilon) at fixed r0: epsilon, hence every
@@ -876,12 +900,6 @@ Discretization discretize(const Teuchos::RCP<assembly::DofMap>& dofs, const Prob
   return d;
 }
 
-Teuchos::RCP<assembly::DofMap> distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                                          const ProblemSetup& setup) {
-  return Teuchos::rcp(
-      new assembly::DofMap(comm, *setup.mesh, assembly::formulationDim(setup.formulation), setup.partition));
-}
-
 }  // namespace
 
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
@@ -891,11 +909,11 @@ Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, co
 
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
                           const Teuchos::ParameterList& linearSolver) {
-  const auto dofs = distribute(comm, setup);
+  const auto dist = distribute(comm, setup);
   const bool rigid = linearSolver.get<std::string>("MueLu Near Null Space") == "rigid body modes";
-  const auto modes = rigid ? assembly::rigidBodyModes(*dofs, *setup.mesh, setup.formulation) : Teuchos::null;
-  return discretize(dofs, setup,
-                    solver::buildLinearSolver(linearSolver, comm->getSize(), dofs->dofsPerNode(), modes,
+  const auto modes = rigid ? assembly::rigidBodyModes(*dist.dofs, *dist.mesh, setup.formulation) : Teuchos::null;
+  return discretize(dist, setup,
+                    solver::buildLinearSolver(linearSolver, comm->getSize(), dist.dofs->dofsPerNode(), modes,
                                               !setup.interaction.has_value()));
 }
 

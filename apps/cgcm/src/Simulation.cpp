@@ -153,7 +153,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   solver::NewtonSolver newton(model, newtonSettings);
   solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
   std::unique_ptr<ContactProbe> probe;
-  if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *setup.mesh, *problem);
+  if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *disc.mesh, *problem);
   const int parameterIndex = model->parameterIndex(plan.parameter);
 
   if (root && printSteps) {
@@ -195,7 +195,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   } else if (!setup.initialMotion.empty()) {
     assembly::DirichletConditions motion(disc.dofs);
     for (const auto& c : setup.initialMotion)
-      motion.add(setup.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+      motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
     motion.impose(plan.path.path.front(), u);
   }
   model->setLoad(resume ? resume->stepper.load : plan.path.path.front());
@@ -328,6 +328,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     result.linearSolver = linearSolverType;
   }
   const auto graph = problem->graph();  // collective only when it has to be built
+  result.numNodes = std::size_t(setup.mesh->numNodes());
+  result.numCells = std::size_t(setup.mesh->numCells());
+  result.numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
   result.matrixRows = graph->getGlobalNumRows();
   result.matrixEntries = graph->getGlobalNumEntries();
   {
@@ -337,6 +340,10 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     const double mine = double(usage.ru_maxrss) / 1024.0;
     result.peakMemoryMB.assign(comm.getSize(), 0.0);
     Teuchos::gatherAll(comm, 1, &mine, comm.getSize(), result.peakMemoryMB.data());
+    const long held[2] = {long(disc.mesh->numCells()), long(disc.mesh->numNodes())};
+    std::vector<long> all(2 * std::size_t(comm.getSize()));
+    Teuchos::gatherAll(comm, 2, held, int(all.size()), all.data());
+    for (int r = 0; r < comm.getSize(); ++r) result.meshHeld.push_back({all[2 * r], all[2 * r + 1]});
   }
   const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);

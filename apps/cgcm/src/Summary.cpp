@@ -83,6 +83,16 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
     line += core::hugePageMalloc() ? " (malloc in transparent huge pages)" : " (malloc in 4 KiB pages)";
     both((line + "\n").c_str());
   }
+  if (result.meshHeld.size() > 1) {
+    std::string line = "mesh assembled per rank (cells, nodes):";
+    for (std::size_t r = 0; r < result.meshHeld.size(); ++r) {
+      std::snprintf(buf, sizeof buf, "%s %ld, %ld", r == 0 ? "" : ";", result.meshHeld[r][0], result.meshHeld[r][1]);
+      line += buf;
+    }
+    std::snprintf(buf, sizeof buf, " of %zu, %zu%s", result.numCells, result.numNodes,
+                  result.volumePairs.empty() ? "" : " (Method 1 reads the whole mesh)");
+    both((line + buf + "\n").c_str());
+  }
   if (!result.volumePairs.empty()) both((result.volumePairs + "\n").c_str());
 }
 

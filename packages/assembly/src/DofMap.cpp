@@ -1,6 +1,7 @@
 #include "cgcm/assembly/DofMap.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_TieBreak.hpp>
 #include <Zoltan2_BasicVectorAdapter.hpp>
 #include <Zoltan2_PartitioningProblem.hpp>
 
@@ -19,10 +20,8 @@ CellPartition parseCellPartition(const std::string& name) {
   throw InputError("Solver/Partition = \"" + name + "\": allowed values are \"geometric\" and \"contiguous\"");
 }
 
-namespace {
-
-// The rank of every mesh-wide cell, the same on every rank.
 std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition) {
+  if (partition == CellPartition::LocalPart) throw std::logic_error("partitionCells: a local part is partitioned");
   const int rank = comm.getRank(), p = comm.getSize();
   const LocalIndex numCells = mesh.numCells();
   auto first = [&](int r) { return LocalIndex((long long)numCells * r / p); };
@@ -68,13 +67,24 @@ std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPa
   return owner;
 }
 
+namespace {
+
+// Ownership of a node shared by several ranks: the lowest, as for a mesh held whole.
+struct LowestRank : Tpetra::Details::TieBreak<LocalIndex, GlobalIndex> {
+  bool mayHaveSideEffects() const override { return false; }
+  std::size_t selectedIndex(GlobalIndex, const std::vector<std::pair<int, LocalIndex>>& pidAndLid) const override {
+    return std::size_t(std::min_element(pidAndLid.begin(), pidAndLid.end()) - pidAndLid.begin());
+  }
+};
+
 }  // namespace
 
 DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int dofsPerNode,
                CellPartition partition)
     : comm_(comm),
       dofsPerNode_(dofsPerNode),
-      cellOwner_(partitionCells(*comm, mesh, partition)),
+      cellOwner_(partition == CellPartition::LocalPart ? std::vector<int>(std::size_t(mesh.numCells()), comm->getRank())
+                                                       : partitionCells(*comm, mesh, partition)),
       nodeIds_(mesh.nodeIds),
       numMeshNodes_(mesh.numNodes()) {
   const int rank = comm->getRank(), p = comm->getSize();
@@ -87,7 +97,7 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
         throw std::logic_error("DofMap: node id " + std::to_string(nodeIds_[n]) + " is negative or repeated");
   }
 
-  nodeOwner_.assign(mesh.numNodes(), p);
+  std::vector<int> nodeOwner(std::size_t(mesh.numNodes()), p);
   localCells_.resize(mesh.blocks.size());
   std::set<LocalIndex> touched;
   LocalIndex cell = 0;
@@ -98,22 +108,32 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
       const int owner = cellOwner_[cell];
       for (int a = 0; a < npc; ++a) {
         const LocalIndex n = blk.connectivity[std::size_t(c) * npc + a];
-        nodeOwner_[n] = std::min(nodeOwner_[n], owner);
+        nodeOwner[n] = std::min(nodeOwner[n], owner);
         if (owner == rank) touched.insert(n);
       }
       if (owner == rank) localCells_[b].push_back(c);
     }
   }
-  // Nodes that belong to no cell would make the system singular.
-  for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
-    if (nodeOwner_[n] == p) nodeOwner_[n] = 0;
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  ownsNode_.assign(std::size_t(mesh.numNodes()), 0);
+  if (partition != CellPartition::LocalPart) {
+    // Nodes that belong to no cell would make the system singular.
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n) ownsNode_[n] = nodeOwner[n] == rank || (nodeOwner[n] == p && rank == 0);
+  } else {  // the ranks that share a node see only their own cells: Tpetra's directory settles it
+    std::vector<GlobalIndex> ids;
+    for (LocalIndex n : touched) ids.push_back(globalNode(n));
+    const Teuchos::RCP<const Map> touchedMap = Teuchos::rcp(new Map(invalid, ids.data(), ids.size(), 0, comm));
+    const LowestRank lowest;
+    const auto oneToOne = Tpetra::createOneToOne(touchedMap, lowest);
+    for (LocalIndex n : touched) ownsNode_[n] = oneToOne->isNodeGlobalElement(globalNode(n));
+  }
 
   std::vector<GlobalIndex> ownedNodes, overlapNodes;
   for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
-    if (nodeOwner_[n] == rank) ownedNodes.push_back(globalNode(n));
+    if (ownsNode_[n]) ownedNodes.push_back(globalNode(n));
   overlapNodes = ownedNodes;
   for (LocalIndex n : touched)
-    if (nodeOwner_[n] != rank) overlapNodes.push_back(globalNode(n));
+    if (!ownsNode_[n]) overlapNodes.push_back(globalNode(n));
   auto dofsOf = [dofsPerNode](const std::vector<GlobalIndex>& nodes) {
     std::vector<GlobalIndex> dofs;
     dofs.reserve(nodes.size() * dofsPerNode);
@@ -123,7 +143,6 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
   };
   const std::vector<GlobalIndex> owned = dofsOf(ownedNodes), overlap = dofsOf(overlapNodes);
 
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   ownedMap_ = Teuchos::rcp(new Map(invalid, owned.data(), owned.size(), 0, comm));
   overlapMap_ = Teuchos::rcp(new Map(invalid, overlap.data(), overlap.size(), 0, comm));
   importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));

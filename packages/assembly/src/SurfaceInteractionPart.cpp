@@ -31,13 +31,12 @@ SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, 
   // Each pair is evaluated by exactly one rank: the owner of its facet's cell searches and pairs the
   // facet's points (against every whole surface); the pair list holds this rank's pairs only.
   std::vector<std::vector<char>> ownsFacet(interaction_->numBodies());
-  const int rank = dofs_->comm()->getRank();
   for (int b = 0; b < interaction_->numBodies(); ++b) {
     const auto& surf = interaction_->surface(b);
     if (surf.facetCells.size() != std::size_t(surf.numFacets()))
       throw std::logic_error("surface without facet-to-cell map");
     ownsFacet[b].resize(surf.numFacets());
-    for (LocalIndex f = 0; f < surf.numFacets(); ++f) ownsFacet[b][f] = dofs_->cellOwner(surf.facetCells[f]) == rank;
+    for (LocalIndex f = 0; f < surf.numFacets(); ++f) ownsFacet[b][f] = dofs_->evaluatesCell(surf.facetCells[f]);
   }
   interaction_->setEvaluatedFacets(std::move(ownsFacet));
 }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -19,19 +20,20 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/mesh/Generators.hpp"
+#include "cgcm/mesh/LocalPart.hpp"
 
 namespace cgcm::assembly {
 namespace {
 
 // Two boxes along z, a gap apart: body 0 tetrahedra below, body 1 hexahedra above.
-std::shared_ptr<mesh::Mesh> twoBoxes(Real gap) {
+std::shared_ptr<mesh::Mesh> twoBoxes(Real gap, int cells = 2) {
   mesh::BoxSpec lower;
-  lower.nx = lower.ny = lower.nz = 2;
+  lower.nx = lower.ny = lower.nz = cells;
   lower.tetrahedra = true;
   lower.z0 = -1.0;
   auto m = std::make_shared<mesh::Mesh>(mesh::box(lower));
   mesh::BoxSpec upper;
-  upper.nx = upper.ny = upper.nz = 2;
+  upper.nx = upper.ny = upper.nz = cells;
   upper.x0 = 0.1, upper.y0 = -0.05, upper.z0 = gap;
   upper.name = "upper";
   mesh::append(*m, mesh::box(upper), "upper ");
@@ -311,21 +313,30 @@ TEST(Problem, IsTheSumOfItsParts) {
   EXPECT_EQ(bulk.searchRadius(), 0.0);
 }
 
-// What one evaluation of the two boxes with Method 3 gives, indexed by mesh node (node * 3 + i), gathered
-// over the ranks: the residual, the tangent (dense), the rigid-body modes and the forces on the bodies.
-struct ByMeshNode {
+// What one evaluation of the two boxes with Method 3 gives, gathered over the ranks: the residual, the
+// tangent (dense), the rigid-body modes and the forces on the bodies. Entries are indexed by `index` of a
+// dof, u given the same way.
+struct Gathered {
   std::vector<Real> f, J, modes;
   std::vector<std::array<Real, 3>> forces;
 };
 
-ByMeshNode evaluateByMeshNode(const std::shared_ptr<mesh::Mesh>& m, const std::vector<Real>& u) {
+using DofIndex = std::function<std::size_t(const DofMap&, GlobalIndex)>;
+// node * 3 + i by the node's index in the mesh
+const DofIndex byMeshNode = [](const DofMap& dofs, GlobalIndex dof) {
+  return std::size_t(dofs.meshNodeOfDof(dof)) * 3 + std::size_t(dof % 3);
+};
+// the dof's global index: the whole mesh's node * 3 + i, also in a rank's part
+const DofIndex byGlobalId = [](const DofMap&, GlobalIndex dof) { return std::size_t(dof); };
+
+Gathered evaluateGathered(const std::shared_ptr<mesh::Mesh>& m, Teuchos::RCP<DofMap> dofs, const std::vector<Real>& u,
+                          const DofIndex& dofIndex) {
   auto comm = Tpetra::getDefaultComm();
-  auto dofs = Teuchos::rcp(new DofMap(comm, *m, 3));
   Problem p(dofs, m, Formulation::ThreeD, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
   p.setInteraction(methodThree(*m), 1.5);
   const Map& owned = *dofs->ownedMap();
   const std::size_t n = u.size(), numOwned = owned.getNodeNumElements();
-  auto index = [&](GlobalIndex dof) { return std::size_t(dofs->meshNodeOfDof(dof)) * 3 + std::size_t(dof % 3); };
+  auto index = [&](GlobalIndex dof) { return dofIndex(*dofs, dof); };
   Vector uv(dofs->ownedMap()), fv(dofs->ownedMap());
   {
     auto h = uv.getLocalViewHost(Tpetra::Access::OverwriteAll);
@@ -348,7 +359,7 @@ ByMeshNode evaluateByMeshNode(const std::shared_ptr<mesh::Mesh>& m, const std::v
     J->getLocalRowCopy(LocalIndex(lid), cols, vals, count);
     for (std::size_t k = 0; k < count; ++k) K[row * n + index(J->getColMap()->getGlobalElement(cols(k)))] += vals(k);
   }
-  ByMeshNode out{std::vector<Real>(n), std::vector<Real>(n * n), std::vector<Real>(6 * n), p.interactionForces()};
+  Gathered out{std::vector<Real>(n), std::vector<Real>(n * n), std::vector<Real>(6 * n), p.interactionForces()};
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(n), f.data(), out.f.data());
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(n * n), K.data(), out.J.data());
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, int(6 * n), R.data(), out.modes.data());
@@ -375,7 +386,9 @@ TEST(DofMap, NodeIdsOnlyLabelTheDofs) {
   std::shuffle(shuffled->nodeIds.begin(), shuffled->nodeIds.end(), std::mt19937(3));
   ASSERT_NE(shuffled->nodeIds.front(), 0);
   const auto u = randomDisplacement(3 * std::size_t(plain->numNodes()), 0.02, 19);
-  const ByMeshNode a = evaluateByMeshNode(plain, u), b = evaluateByMeshNode(shuffled, u);
+  auto comm = Tpetra::getDefaultComm();
+  const Gathered a = evaluateGathered(plain, Teuchos::rcp(new DofMap(comm, *plain, 3)), u, byMeshNode),
+                 b = evaluateGathered(shuffled, Teuchos::rcp(new DofMap(comm, *shuffled, 3)), u, byMeshNode);
   Real fScale = 0.0, jScale = 0.0, modeScale = 0.0;
   const Real fDiff = maxAbsDifference(a.f, b.f, fScale), jDiff = maxAbsDifference(a.J, b.J, jScale),
              modeDiff = maxAbsDifference(a.modes, b.modes, modeScale);
@@ -389,6 +402,45 @@ TEST(DofMap, NodeIdsOnlyLabelTheDofs) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(b.forces[body][i], a.forces[body][i], 1e-13 * std::abs(a.forces[0][2]));
   std::printf("[node ids] shuffled against plain: |df| %.1e of %.1e, |dJ| %.1e of %.1e, %d rank(s)\n", fDiff, fScale,
               jDiff, jScale, Tpetra::getDefaultComm()->getSize());
+}
+
+// Each rank holding only its part of the mesh (its cells, the nodes they touch and the whole surfaces)
+// assembles what the ranks holding it whole assemble: the same dof distribution, residual, tangent,
+// interaction forces and rigid-body modes, on 1 and 2 ranks.
+TEST(DofMap, RanksHoldingTheirPartsAssembleWhatTheWholeMeshGives) {
+  auto comm = Tpetra::getDefaultComm();
+  auto whole = twoBoxes(0.3, 4);  // interior nodes: a rank's part leaves out those of the other's cells
+  auto wholeDofs = Teuchos::rcp(new DofMap(comm, *whole, 3));
+  const auto owners = partitionCells(*comm, *whole, CellPartition::Geometric);
+  auto part = std::make_shared<mesh::Mesh>(mesh::localPart(*whole, owners, comm->getRank()));
+  auto partDofs = Teuchos::rcp(new DofMap(comm, *part, 3, CellPartition::LocalPart));
+  EXPECT_TRUE(partDofs->ownedMap()->isSameAs(*wholeDofs->ownedMap()));
+  EXPECT_TRUE(partDofs->overlapMap()->isSameAs(*wholeDofs->overlapMap()));
+  LocalIndex partCells = 0;
+  for (std::size_t b = 0; b < part->blocks.size(); ++b) partCells += LocalIndex(partDofs->localCells(b).size());
+  EXPECT_EQ(partCells, part->numCells());
+  if (comm->getSize() > 1) {
+    EXPECT_LT(part->numCells(), whole->numCells());
+    EXPECT_LT(part->numNodes(), whole->numNodes());
+  }
+  ASSERT_EQ(part->surfaces.size(), whole->surfaces.size());
+  for (std::size_t s = 0; s < part->surfaces.size(); ++s)
+    EXPECT_EQ(part->surfaces[s].numFacets(), whole->surfaces[s].numFacets());
+
+  const auto u = randomDisplacement(3 * std::size_t(whole->numNodes()), 0.02, 23);
+  const Gathered a = evaluateGathered(whole, wholeDofs, u, byGlobalId), b = evaluateGathered(part, partDofs, u, byGlobalId);
+  Real fScale = 0.0, jScale = 0.0, modeScale = 0.0;
+  const Real fDiff = maxAbsDifference(a.f, b.f, fScale), jDiff = maxAbsDifference(a.J, b.J, jScale),
+             modeDiff = maxAbsDifference(a.modes, b.modes, modeScale);
+  EXPECT_LE(fDiff, 1e-13 * fScale);
+  EXPECT_LE(jDiff, 1e-13 * jScale);
+  EXPECT_LE(modeDiff, 1e-14 * modeScale);
+  ASSERT_EQ(b.forces.size(), 2u);
+  EXPECT_GT(a.forces[0][2], 0.0);
+  for (int body = 0; body < 2; ++body)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(b.forces[body][i], a.forces[body][i], 1e-13 * std::abs(a.forces[0][2]));
+  std::printf("[local part] rank %d holds %d of %d cells, %d of %d nodes: |df| %.1e, |dJ| %.1e\n", comm->getRank(),
+              part->numCells(), whole->numCells(), part->numNodes(), whole->numNodes(), fDiff, jDiff);
 }
 
 TEST(DofMap, NodeIdsAreCheckedForRepeatsAndGaps) {

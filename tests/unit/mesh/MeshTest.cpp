@@ -8,6 +8,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
+#include "cgcm/mesh/LocalPart.hpp"
 #include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
 
@@ -316,4 +317,49 @@ TEST(Mirror, RejectsNodesOnTheNegativeSide) {
 }
 
 }  // namespace
+// Three ranks' parts of a 4^3 box split in slabs along x: each has its cells with their nodes in
+// ascending global id and the whole surface; the parts' cells add up to the mesh, node sets are
+// restricted, and a facet's cell is the part's own or -1.
+TEST(LocalPart, HoldsItsCellsTheirNodesAndTheWholeSurface) {
+  BoxSpec spec;
+  spec.nx = spec.ny = spec.nz = 4;
+  const Mesh whole = box(spec);
+  std::vector<int> owner(std::size_t(whole.numCells()));
+  for (LocalIndex c = 0; c < whole.numCells(); ++c) {
+    Real x = 0.0;
+    for (int a = 0; a < 8; ++a) x += whole.coord(whole.blocks[0].connectivity[std::size_t(c) * 8 + a], 0) / 8.0;
+    owner[std::size_t(c)] = x < 0.25 ? 0 : (x < 0.75 ? 1 : 2);
+  }
+  LocalIndex cells = 0;
+  for (int rank = 0; rank < 3; ++rank) {
+    SCOPED_TRACE(rank);
+    const Mesh part = localPart(whole, owner, rank);
+    cells += part.numCells();
+    ASSERT_EQ(part.nodeIds.size(), std::size_t(part.numNodes()));
+    EXPECT_TRUE(std::is_sorted(part.nodeIds.begin(), part.nodeIds.end()));
+    for (LocalIndex n = 0; n < part.numNodes(); ++n)
+      for (int i = 0; i < 3; ++i) ASSERT_EQ(part.coord(n, i), whole.coord(LocalIndex(part.nodeIds[n]), i));
+    // the interior nodes (3 x 3 x 3) its cells do not touch are left out: the two planes x = 0.5, 0.75
+    // (or 0.25, 0.5) of 9 each at the ends, none in the middle slab
+    EXPECT_EQ(part.numNodes(), rank == 1 ? 125 : 125 - 18);
+    ASSERT_EQ(part.nodeSets.size(), whole.nodeSets.size());
+    for (LocalIndex n : part.nodeSet("xmin")) EXPECT_EQ(whole.coord(LocalIndex(part.nodeIds[n]), 0), 0.0);
+    EXPECT_EQ(part.nodeSet("xmin").size(), whole.nodeSet("xmin").size());  // all on the surface
+    ASSERT_EQ(part.surfaces.size(), 1u);
+    const auto& s = part.surfaces[0];
+    const auto& w = whole.surfaces[0];
+    ASSERT_EQ(s.numFacets(), w.numFacets());
+    int own = 0;
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      for (int a = 0; a < s.nodesPerFacet; ++a)
+        EXPECT_EQ(part.nodeIds[std::size_t(s.facets[std::size_t(f) * 4 + a])], w.facets[std::size_t(f) * 4 + a]);
+      const LocalIndex c = s.facetCells[std::size_t(f)];
+      EXPECT_EQ(c >= 0, owner[std::size_t(w.facetCells[std::size_t(f)])] == rank);
+      own += c >= 0;
+    }
+    EXPECT_GT(own, 0);
+  }
+  EXPECT_EQ(cells, whole.numCells());
+}
+
 }  // namespace cgcm::mesh

@@ -59,6 +59,7 @@ class Recorder {
 
  private:
   const ProblemSetup& setup_;
+  const mesh::Mesh& mesh_;  ///< the mesh the problem assembles (Discretization::mesh)
   solver::ModelEvaluator& model_;
   const ContactProbe* probe_;
   int parameterIndex_;

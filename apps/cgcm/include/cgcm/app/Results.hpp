@@ -10,7 +10,8 @@
 // axisymmetry) and its normal part, pressure (> 0 pushing into the body,
 // < 0 adhesive), 0 off the interacting surfaces; the load-curve columns as
 // global variables. The state is gathered to rank 0, which evaluates the
-// fields on its copy of the mesh and writes the file.
+// fields on the whole mesh (the set-up's, which a rank may assemble only a
+// part of) and writes the file.
 #include <functional>
 #include <memory>
 #include <string>
@@ -28,13 +29,13 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 
 class ResultsWriter {
  public:
-  /// Creates `path` on rank 0 with the mesh of `disc` and the global
+  /// Creates `path` on rank 0 with `mesh` (the whole mesh that `disc` assembles all or a part of) and the global
   /// variables `globals` (stresses with the problem's material of each
   /// body); keptSteps >= 0: continues the existing file after that many
   /// steps (a restart). Throws InputError (rank 0) if it cannot be created
   /// or continued. Collective.
-  ResultsWriter(const std::string& path, const Discretization& disc, const std::vector<std::string>& globals,
-                int keptSteps = -1);
+  ResultsWriter(const std::string& path, const mesh::Mesh& mesh, const Discretization& disc,
+                const std::vector<std::string>& globals, int keptSteps = -1);
 
   /// Steps written to the file so far (rank 0; 0 elsewhere).
   int numSteps() const { return writer_ ? writer_->numSteps() : 0; }
@@ -51,6 +52,10 @@ class ResultsWriter {
   std::vector<Real> interactionNodeForces(const assembly::Vector& x) const;
   void traction(const std::vector<Real>& u, const std::vector<Real>& force, io::ExodusWriter::Fields& nodal) const;
 
+  /// A state by global node id (id * dim + i) in the order of mesh_'s nodes.
+  std::vector<Real> inMeshOrder(const std::vector<Real>& byGlobalNode) const;
+
+  const mesh::Mesh& mesh_;
   const Discretization& disc_;
   std::vector<std::string> globals_;
   bool root_;

@@ -96,6 +96,9 @@ assembly::Formulation parseFormulation(const std::string& name);
 /// interaction when there is one), Dirichlet conditions and ModelEvaluator,
 /// whose p(0) is (u, gammaW, gammaL) with an interaction and (u) without.
 struct Discretization {
+  /// The mesh this rank assembles: on several ranks its part of the set-up's mesh (mesh::localPart: its
+  /// cells, their nodes and the whole surfaces), except with Method 1, whose pairs need the whole mesh.
+  std::shared_ptr<const mesh::Mesh> mesh;
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
   std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the problem's Method 3, or null
@@ -108,7 +111,7 @@ struct Discretization {
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver);
 /// The same, with the linear solver built from a validated "Linear Solver"
-/// sublist (and, when asked for, the rigid-body modes of the distributed mesh).
+/// sublist (and, when asked for, the rigid-body modes of the mesh).
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
                           const Teuchos::ParameterList& linearSolver);
 

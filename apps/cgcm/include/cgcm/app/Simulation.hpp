@@ -5,6 +5,7 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -44,6 +45,7 @@ struct RunResult {
   std::string linearSolver;         ///< Solver/Linear Solver/Type, "auto" resolved
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
   std::vector<double> peakMemoryMB;                 ///< per rank: the process's peak resident memory
+  std::vector<std::array<long, 2>> meshHeld;        ///< per rank: cells and nodes of the mesh it assembles
   std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
   std::size_t numNodes = 0, numCells = 0, numDofs = 0;  ///< the problem's size
 };

@@ -21,9 +21,15 @@
 
 namespace cgcm::assembly {
 
-enum class CellPartition { Geometric, Contiguous };
+/// How a DofMap finds the cells it evaluates. Geometric and Contiguous split a
+/// mesh that every rank holds whole; LocalPart: the mesh is this rank's part of
+/// a distributed mesh (mesh::localPart), all its cells are this rank's.
+enum class CellPartition { Geometric, Contiguous, LocalPart };
 /// "geometric" or "contiguous"; throws InputError otherwise.
 CellPartition parseCellPartition(const std::string& name);
+/// The rank of every mesh-wide cell of `mesh` (held whole by every rank), the
+/// same list on every rank: Geometric or Contiguous. Collective.
+std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition);
 
 class DofMap {
  public:
@@ -47,8 +53,9 @@ class DofMap {
   const std::vector<LocalIndex>& localCells(std::size_t block) const { return localCells_[block]; }
   /// Rank that evaluates the mesh-wide cell `cell`.
   int cellOwner(LocalIndex cell) const { return cellOwner_[cell]; }
-  bool ownsNode(LocalIndex node) const { return nodeOwner_[node] == comm_->getRank(); }
-  int nodeOwner(LocalIndex node) const { return nodeOwner_[node]; }
+  /// Whether this rank evaluates `cell` (false for -1: a cell of another rank's part).
+  bool evaluatesCell(LocalIndex cell) const { return cell >= 0 && cellOwner_[cell] == comm_->getRank(); }
+  bool ownsNode(LocalIndex node) const { return ownsNode_[node] != 0; }
   /// The global id of mesh node `node`.
   GlobalIndex globalNode(LocalIndex node) const { return nodeIds_.empty() ? GlobalIndex(node) : nodeIds_[node]; }
   /// The mesh node with global id `id`, or -1 if this rank's mesh has none.
@@ -61,7 +68,7 @@ class DofMap {
   Teuchos::RCP<const Comm> comm_;
   int dofsPerNode_;
   std::vector<int> cellOwner_;  ///< [mesh-wide cell]
-  std::vector<int> nodeOwner_;
+  std::vector<char> ownsNode_;
   std::vector<GlobalIndex> nodeIds_;                     ///< the mesh's, empty for node n = id n
   std::unordered_map<GlobalIndex, LocalIndex> meshNodes_;  ///< inverse of nodeIds_ where it is not empty
   LocalIndex numMeshNodes_ = 0;

@@ -40,7 +40,9 @@ struct Surface {
   int body = 0;
   int nodesPerFacet = 2;
   std::vector<LocalIndex> facets;
-  std::vector<LocalIndex> facetCells;  ///< per facet: the cell it bounds (mesh-wide cell index)
+  /// Per facet: the cell it bounds (mesh-wide cell index; in a rank's part of a distributed mesh the
+  /// part's cell, or -1 where another rank holds it: mesh::localPart).
+  std::vector<LocalIndex> facetCells;
   LocalIndex numFacets() const { return LocalIndex(facets.size() / nodesPerFacet); }
 };
 

@@ -1,0 +1,25 @@
+#pragma once
+// The part of a mesh that one rank holds in a distributed run.
+//
+// A rank evaluates its own cells and reads the whole interaction surfaces
+// (every body's surface, on every rank: the closest-point search needs the
+// other bodies wherever their cells are evaluated). Its part therefore has
+// its cells and the nodes they touch, plus every surface node, each node
+// carrying its index in the whole mesh as its global id (Mesh::nodeIds).
+#include <vector>
+
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::mesh {
+
+/// The part of `whole` (numbered as built: no node ids of its own) that
+/// `rank` holds when `cellOwner` (per mesh-wide cell) gives the cells:
+///   - blocks as in `whole` (empty ones kept) with this rank's cells, in mesh-wide order;
+///   - nodes: those of these cells, every surface node and the nodes `alsoKept`, in ascending global id;
+///   - node sets: every name, restricted to the part's nodes;
+///   - surfaces: whole, on the part's node indices; facetCells names the part's
+///     cell, or is -1 where another rank holds the cell.
+Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank,
+               const std::vector<LocalIndex>& alsoKept = {});
+
+}  // namespace cgcm::mesh

@@ -1,0 +1,67 @@
+#include "cgcm/mesh/LocalPart.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace cgcm::mesh {
+
+Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, const std::vector<LocalIndex>& alsoKept) {
+  if (!whole.nodeIds.empty()) throw std::logic_error("mesh::localPart: the mesh is a part already");
+  if (cellOwner.size() != std::size_t(whole.numCells()))
+    throw std::logic_error("mesh::localPart: " + std::to_string(cellOwner.size()) + " cell owners for " +
+                           std::to_string(whole.numCells()) + " cells");
+  const LocalIndex numNodes = whole.numNodes();
+  std::vector<char> kept(std::size_t(numNodes), 0);
+  std::vector<LocalIndex> cellInPart(cellOwner.size(), -1);
+  LocalIndex cell = 0, partCells = 0;
+  for (const auto& block : whole.blocks) {
+    const int npc = nodesPerCell(block.type);
+    for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
+      if (cellOwner[std::size_t(cell)] != rank) continue;
+      cellInPart[std::size_t(cell)] = partCells++;
+      for (int a = 0; a < npc; ++a) kept[std::size_t(block.connectivity[std::size_t(c) * npc + a])] = 1;
+    }
+  }
+  for (const auto& s : whole.surfaces)
+    for (LocalIndex n : s.facets) kept[std::size_t(n)] = 1;
+  for (LocalIndex n : alsoKept) kept.at(std::size_t(n)) = 1;
+
+  Mesh part;
+  part.dim = whole.dim;
+  part.numBodies = whole.numBodies;
+  std::vector<LocalIndex> index(std::size_t(numNodes), -1);  // whole -> part
+  for (LocalIndex n = 0; n < numNodes; ++n) {
+    if (!kept[std::size_t(n)]) continue;
+    index[std::size_t(n)] = LocalIndex(part.nodeIds.size());
+    part.nodeIds.push_back(n);
+    for (int i = 0; i < whole.dim; ++i) part.coords.push_back(whole.coord(n, i));
+  }
+  cell = 0;
+  for (const auto& block : whole.blocks) {
+    ElementBlock b;
+    b.name = block.name;
+    b.body = block.body;
+    b.type = block.type;
+    const int npc = nodesPerCell(block.type);
+    for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell)
+      if (cellOwner[std::size_t(cell)] == rank)
+        for (int a = 0; a < npc; ++a) b.connectivity.push_back(index[std::size_t(block.connectivity[std::size_t(c) * npc + a])]);
+    part.blocks.push_back(std::move(b));
+  }
+  for (const auto& [name, nodes] : whole.nodeSets) {
+    auto& mine = part.nodeSets[name];
+    for (LocalIndex n : nodes)
+      if (index[std::size_t(n)] >= 0) mine.push_back(index[std::size_t(n)]);
+  }
+  for (const auto& s : whole.surfaces) {
+    Surface t;
+    t.body = s.body;
+    t.nodesPerFacet = s.nodesPerFacet;
+    for (LocalIndex n : s.facets) t.facets.push_back(index[std::size_t(n)]);
+    for (LocalIndex c : s.facetCells) t.facetCells.push_back(cellInPart[std::size_t(c)]);
+    part.surfaces.push_back(std::move(t));
+  }
+  return part;
+}
+
+}  // namespace cgcm::mesh
