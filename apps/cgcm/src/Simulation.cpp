@@ -98,7 +98,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const bool printSteps = out.get<bool>("Print Steps");
 
   // Everything that can be rejected is checked before any work starts.
+  const auto setupStart = std::chrono::steady_clock::now();
   ProblemSetup setup = buildProblem(deck);
+  const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
   const PathPlan plan = planPath(deck.sublist("Loading"), setup);
   auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
                                                                deck.sublist("Solver").sublist("Linear Solver"));
@@ -142,7 +144,10 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     io::writeDeck(deck, dir + "/parameters.xml");
   });
 
+  const auto distributionStart = std::chrono::steady_clock::now();
   const Discretization disc = discretize(comm, setup, linearSolverSettings);
+  const double distributionSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - distributionStart).count();
   if (resume && resume->u.size() != disc.dofs->ownedMap()->getGlobalNumElements())
     throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
                      " unknowns, the deck's problem " +
@@ -321,6 +326,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   }
   result.curve = recorder.curve;
   result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+  result.meshSeconds = meshSeconds;
+  result.distributionSeconds = distributionSeconds;
   {
     // LOCA does not report its solves (its groups do not log them to NOX's statistics).
     result.linearSolves = newton.linearSolves().solves;

@@ -74,6 +74,9 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
                 result.graphSeconds,
                 result.pathSeconds - result.assemblySeconds - result.interactionSeconds - result.graphSeconds);
   both(buf);
+  std::snprintf(buf, sizeof buf, "before the path: mesh and its checks %.3f s, distribution and set-up %.3f s\n",
+                result.meshSeconds, result.distributionSeconds);
+  both(buf);
   if (!result.peakMemoryMB.empty()) {
     std::string line = "peak memory per rank:";
     for (std::size_t r = 0; r < result.peakMemoryMB.size(); ++r) {
