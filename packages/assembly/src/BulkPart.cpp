@@ -112,6 +112,7 @@ BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formula
     d.numNodes = nn;
     d.name = blk.name;
     d.cells = cells;
+    for (LocalIndex c : cells) d.cellIds.push_back(blk.cellId(c));
     d.dofLids = DofView("dofLids", cells.size(), nn * dim_);
     d.X = CoordView("X", cells.size(), nn, dim_);
     for (std::size_t k = 0; k < cells.size(); ++k)
@@ -173,7 +174,7 @@ BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const Vector
     if (bf.count > 0 && out.first.empty()) {
       const LocalIndex c = bf.first;
       std::ostringstream where;
-      where << "cell " << b.cells[c] << " of block \"" << b.name << "\" (its first node "
+      where << "cell " << b.cellIds[c] << " of block \"" << b.name << "\" (its first node "
             << overlap_->getGlobalElement(b.dofLids(c, 0)) / dim_ << " at X = (";
       for (int i = 0; i < dim_; ++i) where << (i ? ", " : "") << b.X(c, 0, i);
       where << "))";

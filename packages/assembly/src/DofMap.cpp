@@ -88,14 +88,18 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
       nodeIds_(mesh.nodeIds),
       numMeshNodes_(mesh.numNodes()) {
   const int rank = comm->getRank(), p = comm->getSize();
+  std::string badIds;  // thrown on every rank at once: the ranks' parts have ids of their own
   if (!nodeIds_.empty()) {
     if (nodeIds_.size() != std::size_t(mesh.numNodes()))
-      throw std::logic_error("DofMap: the mesh has " + std::to_string(nodeIds_.size()) + " node ids for " +
-                             std::to_string(mesh.numNodes()) + " nodes");
-    for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
+      badIds = "the mesh has " + std::to_string(nodeIds_.size()) + " node ids for " + std::to_string(mesh.numNodes()) +
+               " nodes";
+    for (LocalIndex n = 0; badIds.empty() && n < mesh.numNodes(); ++n)
       if (nodeIds_[n] < 0 || !meshNodes_.emplace(nodeIds_[n], n).second)
-        throw std::logic_error("DofMap: node id " + std::to_string(nodeIds_[n]) + " is negative or repeated");
+        badIds = "node id " + std::to_string(nodeIds_[n]) + " is negative or repeated";
   }
+  int anyBad = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, int(!badIds.empty()), Teuchos::outArg(anyBad));
+  if (anyBad) throw std::logic_error("DofMap: " + (badIds.empty() ? std::string("another rank's node ids are wrong") : badIds));
 
   std::vector<int> nodeOwner(std::size_t(mesh.numNodes()), p);
   localCells_.resize(mesh.blocks.size());

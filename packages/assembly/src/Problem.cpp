@@ -87,7 +87,7 @@ void Problem::buildGraph() {
   if (!cellNeighboursFound_) findCellNeighbours();
   const Map& overlap = *dofs_->overlapMap();
   const std::size_t numOverlapNodes = cellNeighbours_.size();
-  std::vector<std::vector<LocalIndex>> partners(numOverlapNodes);  // mesh node ids
+  std::vector<std::vector<LocalIndex>> partners(numOverlapNodes);  // mesh node indices
   std::vector<Real> partnersHere(numOverlapNodes, 0.0);
   for (const auto& [r, c] : extraCouplings_) {
     const LocalIndex row = overlap.getLocalElement(dofs_->dof(r, 0));

@@ -125,7 +125,7 @@ Mesh box(const BoxSpec& s) {
 
 void append(Mesh& mesh, const Mesh& other, const std::string& prefix) {
   if (mesh.dim != other.dim) throw InputError("cannot append a mesh of another dimension");
-  if (!mesh.nodeIds.empty() || !other.nodeIds.empty())
+  if (!mesh.nodeIds.empty() || !other.nodeIds.empty())  // node ids: a part, or a test's relabelling
     throw std::logic_error("mesh::append: meshes with their own node ids are distributed parts, not built");
   const LocalIndex offset = mesh.numNodes();
   const int bodyOffset = mesh.numBodies;

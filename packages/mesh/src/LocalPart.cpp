@@ -1,5 +1,6 @@
 #include "cgcm/mesh/LocalPart.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -7,6 +8,8 @@ namespace cgcm::mesh {
 
 Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, const std::vector<LocalIndex>& alsoKept) {
   if (!whole.nodeIds.empty()) throw std::logic_error("mesh::localPart: the mesh is a part already");
+  if (!whole.blocks.empty() && !whole.blocks[0].cellIds.empty())
+    throw std::logic_error("mesh::localPart: the mesh is a part already");
   if (cellOwner.size() != std::size_t(whole.numCells()))
     throw std::logic_error("mesh::localPart: " + std::to_string(cellOwner.size()) + " cell owners for " +
                            std::to_string(whole.numCells()) + " cells");
@@ -22,6 +25,13 @@ Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
       for (int a = 0; a < npc; ++a) kept[std::size_t(block.connectivity[std::size_t(c) * npc + a])] = 1;
     }
   }
+  // Nodes of no cell would belong to no rank: the generators and the gmsh reader make none.
+  std::vector<char> inCell(std::size_t(numNodes), 0);
+  for (const auto& block : whole.blocks)
+    for (LocalIndex n : block.connectivity) inCell[std::size_t(n)] = 1;
+  const auto orphan = std::find(inCell.begin(), inCell.end(), 0);
+  if (orphan != inCell.end())
+    throw std::logic_error("mesh::localPart: node " + std::to_string(orphan - inCell.begin()) + " belongs to no cell");
   for (const auto& s : whole.surfaces)
     for (LocalIndex n : s.facets) kept[std::size_t(n)] = 1;
   for (LocalIndex n : alsoKept) kept.at(std::size_t(n)) = 1;
@@ -43,9 +53,11 @@ Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
     b.body = block.body;
     b.type = block.type;
     const int npc = nodesPerCell(block.type);
-    for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell)
-      if (cellOwner[std::size_t(cell)] == rank)
-        for (int a = 0; a < npc; ++a) b.connectivity.push_back(index[std::size_t(block.connectivity[std::size_t(c) * npc + a])]);
+    for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
+      if (cellOwner[std::size_t(cell)] != rank) continue;
+      b.cellIds.push_back(c);
+      for (int a = 0; a < npc; ++a) b.connectivity.push_back(index[std::size_t(block.connectivity[std::size_t(c) * npc + a])]);
+    }
     part.blocks.push_back(std::move(b));
   }
   for (const auto& [name, nodes] : whole.nodeSets) {

@@ -151,6 +151,9 @@ TEST(Results, InteractionTractionPressesWhereTheBodiesTouch) {
 // The fields are written by mesh node whatever global ids the nodes carry: a homogeneous stretch of a
 // block whose nodes have shuffled ids reads back node by node, with the homogeneous J in every cell.
 TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
+  // relabelled ids on a mesh every rank holds whole: one rank (several ranks assemble on parts, whose ids
+  // are the whole mesh's)
+  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "one rank";
   const std::string dir = std::string(CGCM_TEST_OUTPUT) + "/results-node-ids";
   auto d = deck({"Problem/Formulation=3D", "Geometry/Type=block", "Geometry/Block/Cells X=2",
                  "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=2", "Output/Directory=" + dir});

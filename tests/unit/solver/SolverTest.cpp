@@ -51,6 +51,7 @@ RCP<ParameterList> deck(const std::vector<std::string>& overrides) {
 // The assembled problem of a deck, ready for Newton.
 struct System {
   app::ProblemSetup setup;
+  std::shared_ptr<const mesh::Mesh> mesh;  ///< the mesh this rank assembles (its part on several ranks)
   RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
@@ -59,6 +60,7 @@ struct System {
   explicit System(const ParameterList& d) : setup(app::buildProblem(d)) {
     auto comm = Tpetra::getDefaultComm();
     auto disc = app::discretize(comm, setup, d.sublist("Solver").sublist("Linear Solver"));
+    mesh = disc.mesh;
     dofs = disc.dofs;
     problem = disc.problem;
     dirichlet = disc.dirichlet;
@@ -331,7 +333,7 @@ TEST(RuntimeFaults, InvertedCellsAndNonFiniteResidualsAreReportedWithWhere) {
   const auto& mesh = *sys.setup.mesh;
   // Node 0's first cell turned inside out: node 0 pushed far through it.
   assembly::Vector u(dofs->ownedMap()), f(dofs->ownedMap());
-  const auto lid = dofs->ownedMap()->getLocalElement(dofs->dof(0, 0));
+  const auto lid = dofs->ownedMap()->getLocalElement(GlobalIndex(0));  // node 0, x (global ids)
   if (lid != Teuchos::OrdinalTraits<LocalIndex>::invalid()) {
     u.replaceLocalValue(lid, 100.0 * mesh.coord(mesh.numNodes() - 1, 0) + 100.0);
   }
@@ -340,7 +342,7 @@ TEST(RuntimeFaults, InvertedCellsAndNonFiniteResidualsAreReportedWithWhere) {
                                             "\"[^\"]+\" \\(its first node [0-9]+ at X = \\(");
   // A NaN in a residual names its node and component.
   assembly::Vector g(dofs->ownedMap());
-  const GlobalIndex dof = dofs->dof(3, 1);
+  const GlobalIndex dof = 3 * dofs->dofsPerNode() + 1;  // node 3, component 1
   const auto k = dofs->ownedMap()->getLocalElement(dof);
   const bool owner = k != Teuchos::OrdinalTraits<LocalIndex>::invalid();
   if (owner) g.replaceLocalValue(k, std::nan(""));
@@ -469,7 +471,7 @@ TEST(LinearSolver, RigidBodyModesAreTheNullSpaceOfTheReferenceTangent) {
                    "Geometry/Block/Cells Z=2", "Solver/Linear Solver/Type=Belos GMRES + MueLu",
                    "Solver/Linear Solver/MueLu Near Null Space=rigid body modes"});
     System sys(*d);
-    const auto modes = assembly::rigidBodyModes(*sys.dofs, *sys.setup.mesh, sys.setup.formulation);
+    const auto modes = assembly::rigidBodyModes(*sys.dofs, *sys.mesh, sys.setup.formulation);
     ASSERT_FALSE(modes.is_null());
     const std::size_t expected = form == "3D" ? 6 : 3;
     ASSERT_EQ(modes->getNumVectors(), expected);
@@ -488,7 +490,7 @@ TEST(LinearSolver, RigidBodyModesAreTheNullSpaceOfTheReferenceTangent) {
   }
   auto axi = deck({"Problem/Formulation=axisymmetric"});
   System sys(*axi);
-  EXPECT_TRUE(assembly::rigidBodyModes(*sys.dofs, *sys.setup.mesh, sys.setup.formulation).is_null());
+  EXPECT_TRUE(assembly::rigidBodyModes(*sys.dofs, *sys.mesh, sys.setup.formulation).is_null());
 }
 
 TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
@@ -503,7 +505,7 @@ TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
   const auto& problem = sys.problem;
   assembly::Vector far(dofs->ownedMap()), near(dofs->ownedMap()), f(dofs->ownedMap());
   assembly::DirichletConditions lift(dofs);
-  lift.add(s.mesh->nodeSet("upper body"), 1, 0.0, 1.0);
+  lift.add(sys.mesh->nodeSet("upper body"), 1, 0.0, 1.0);
   lift.impose(1.0, far);  // the sphere one radius higher
   EXPECT_TRUE(problem->updateInteractionGraph(far));
   auto J = problem->createMatrix();

@@ -58,6 +58,7 @@ class BulkPart {
     Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i], reference coordinates
     std::string name;                                         // the mesh block's
     std::vector<LocalIndex> cells;                            // block-local cell index in the mesh
+    std::vector<LocalIndex> cellIds;                          // the same in the whole mesh (messages)
   };
   const Map* overlap_;
   Formulation formulation_;

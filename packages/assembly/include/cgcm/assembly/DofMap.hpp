@@ -67,7 +67,7 @@ class DofMap {
  private:
   Teuchos::RCP<const Comm> comm_;
   int dofsPerNode_;
-  std::vector<int> cellOwner_;  ///< [mesh-wide cell]
+  std::vector<int> cellOwner_;  ///< per cell of the mesh given (mesh-wide index)
   std::vector<char> ownsNode_;
   std::vector<GlobalIndex> nodeIds_;                     ///< the mesh's, empty for node n = id n
   std::unordered_map<GlobalIndex, LocalIndex> meshNodes_;  ///< inverse of nodeIds_ where it is not empty

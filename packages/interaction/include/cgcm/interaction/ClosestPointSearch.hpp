@@ -32,8 +32,7 @@ class ClosestPointSearch {
   /// Spatial dimension of the points and facets.
   virtual int dim() const = 0;
   /// Builds the search structure over the facets of `surface`; `coords` holds
-  /// dim() entries per node, indexed by the global node numbers of the
-  /// facets. The facet coordinates are copied: rebuild after the nodes move.
+  /// dim() entries per node, indexed by the node indices of the facets. The facet coordinates are copied: rebuild after the nodes move.
   virtual void build(const Real* coords, const mesh::Surface& surface) = 0;
   void build(const std::vector<Real>& coords, const mesh::Surface& surface) { build(coords.data(), surface); }
   /// Number of facets of the last build.

@@ -235,7 +235,7 @@ class SurfaceInteraction {
   void setEvaluatedFacets(std::vector<std::vector<char>> evaluated);
 
   /// Rebuilds the search structures at `coords` (dim() entries per node,
-  /// global node ids) and the pair list. Call once per evaluation: at the
+  /// indexed by the mesh's node indices) and the pair list. Call once per evaluation: at the
   /// surface coordinates (and cutoff) of the last call it returns at once
   /// (a residual and a Jacobian at one state share one search); otherwise
   /// each point's search starts from its previous projection.

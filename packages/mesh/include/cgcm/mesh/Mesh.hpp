@@ -1,11 +1,11 @@
 #pragma once
 // In-memory finite-element mesh of one or more bodies.
 //
-// The mesh is replicated on every MPI rank (research-size problems); the
-// distribution of degrees of freedom and the element partition are made by
-// the assembly package. Node indices are 0-based indices into this mesh's
-// arrays; a node's global id, which labels its degrees of freedom across the
-// ranks, is its index unless `nodeIds` says otherwise.
+// A whole mesh, or a rank's part of one (mesh::localPart); the distribution
+// of degrees of freedom and the element partition are made by the assembly
+// package. Node indices are 0-based indices into this mesh's arrays; a node's
+// global id, which labels its degrees of freedom across the ranks, is its
+// index unless `nodeIds` says otherwise.
 #include <map>
 #include <string>
 #include <vector>
@@ -29,6 +29,9 @@ struct ElementBlock {
   int body = 0;
   CellType type = CellType::Quad4;
   std::vector<LocalIndex> connectivity;  ///< nodesPerCell(type) node indices per cell
+  /// Per cell, its index in the whole mesh's block (a rank's part: mesh::localPart); empty: the cell's own.
+  std::vector<LocalIndex> cellIds;
+  LocalIndex cellId(LocalIndex cell) const { return cellIds.empty() ? cell : cellIds[std::size_t(cell)]; }
   LocalIndex numCells() const { return LocalIndex(connectivity.size() / nodesPerCell(type)); }
 };
 
