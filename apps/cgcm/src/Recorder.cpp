@@ -75,7 +75,7 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
       bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
   if (exodus)
-    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", *setup.mesh, disc, columns_,
+    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", setup.mesh.get(), disc, columns_,
                                                resume ? resume->exodusSteps : -1);
 }
 

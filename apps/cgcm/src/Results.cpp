@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/fem/SolidKernel.hpp"
@@ -69,7 +70,7 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
   throw InputError(error);
 }
 
-ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh& mesh, const Discretization& disc,
+ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const Discretization& disc,
                              const std::vector<std::string>& globals, int keptSteps)
     : mesh_(mesh),
       disc_(disc),
@@ -77,18 +78,20 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh& mesh, co
       root_(disc.dofs->comm()->getRank() == 0),
       gather_(disc.dofs->ownedMap()) {
   io::ExodusVariables vars;
-  for (int i = 0; i < mesh.dim; ++i) vars.nodal.push_back(kDisplacement[i]);
+  const int dim = disc.dofs->dofsPerNode();
+  for (int i = 0; i < dim; ++i) vars.nodal.push_back(kDisplacement[i]);
   if (disc.interaction) {
     vars.nodal.insert(vars.nodal.end(), {"traction_x", "traction_y"});
-    if (mesh.dim == 3) vars.nodal.push_back("traction_z");
+    if (dim == 3) vars.nodal.push_back("traction_z");
     vars.nodal.push_back("pressure");
   }
   for (const auto& c : stressComponents(disc.problem->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
   createOnRoot(*disc.dofs->comm(), [&] {
-    writer_ = keptSteps >= 0 ? std::make_unique<io::ExodusWriter>(path, mesh, vars, keptSteps)
-                             : std::make_unique<io::ExodusWriter>(path, "cgcm", mesh, vars);
+    if (!mesh_) throw std::logic_error("ResultsWriter: rank 0 needs the whole mesh");
+    writer_ = keptSteps >= 0 ? std::make_unique<io::ExodusWriter>(path, *mesh_, vars, keptSteps)
+                             : std::make_unique<io::ExodusWriter>(path, "cgcm", *mesh_, vars);
   });
 }
 
@@ -107,16 +110,16 @@ void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& 
 
 std::vector<Real> ResultsWriter::inMeshOrder(const std::vector<Real>& byGlobalNode) const {
   if (byGlobalNode.empty()) return {};
-  const int dim = mesh_.dim;
-  std::vector<Real> out(std::size_t(mesh_.numNodes()) * dim);
-  for (LocalIndex n = 0; n < mesh_.numNodes(); ++n)
-    for (int i = 0; i < dim; ++i) out[std::size_t(n) * dim + i] = byGlobalNode[std::size_t(mesh_.globalNode(n)) * dim + i];
+  const int dim = mesh_->dim;
+  std::vector<Real> out(std::size_t(mesh_->numNodes()) * dim);
+  for (LocalIndex n = 0; n < mesh_->numNodes(); ++n)
+    for (int i = 0; i < dim; ++i) out[std::size_t(n) * dim + i] = byGlobalNode[std::size_t(mesh_->globalNode(n)) * dim + i];
   return out;
 }
 
 void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
                                           io::ExodusWriter::Fields& element) const {
-  const auto& mesh = mesh_;
+  const auto& mesh = *mesh_;
   const int dim = mesh.dim;
   for (int i = 0; i < dim; ++i) {
     auto& d = nodal[kDisplacement[i]];
@@ -175,7 +178,7 @@ std::vector<Real> ResultsWriter::interactionNodeForces(const assembly::Vector& x
 
 void ResultsWriter::traction(const std::vector<Real>& u, const std::vector<Real>& force,
                              io::ExodusWriter::Fields& nodal) const {
-  const auto& mesh = mesh_;
+  const auto& mesh = *mesh_;
   const auto& in = *disc_.interaction;
   const int d = in.dim();
   const LocalIndex nn = mesh.numNodes();

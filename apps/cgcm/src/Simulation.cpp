@@ -148,6 +148,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const Discretization disc = discretize(comm, setup, linearSolverSettings);
   const double distributionSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - distributionStart).count();
+  const auto numNodes = std::size_t(setup.mesh->numNodes()), numCells = std::size_t(setup.mesh->numCells());
+  // From here on only rank 0 reads the whole mesh (results.e); the others assemble on their parts.
+  if (!root && disc.mesh != setup.mesh) setup.mesh.reset();
   if (resume && resume->u.size() != disc.dofs->ownedMap()->getGlobalNumElements())
     throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
                      " unknowns, the deck's problem " +
@@ -162,8 +165,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const int parameterIndex = model->parameterIndex(plan.parameter);
 
   if (root && printSteps) {
-    log << "cgcm: " << assembly::formulationName(setup.formulation) << ", " << setup.mesh->numNodes() << " nodes, "
-        << setup.mesh->numCells() << " cells, " << disc.dofs->ownedMap()->getGlobalNumElements() << " dofs, "
+    log << "cgcm: " << assembly::formulationName(setup.formulation) << ", " << numNodes << " nodes, " << numCells
+        << " cells, " << disc.dofs->ownedMap()->getGlobalNumElements() << " dofs, "
         << comm->getSize() << " rank(s); " << (plan.arcLength ? "arc-length" : "displacement") << " control\n";
     for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
     log << "cgcm: a state is accepted when |f|_2 <= " << newtonSettings.tolerance() << " (Residual Tolerance "
@@ -176,8 +179,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     if (plan.arcLength || plan.parameter != "u") continuation.validate(u);
     RunResult checked;
     checked.completed = true;
-    checked.numNodes = std::size_t(setup.mesh->numNodes());
-    checked.numCells = std::size_t(setup.mesh->numCells());
+    checked.numNodes = numNodes;
+    checked.numCells = numCells;
     checked.numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
     return checked;
   }
@@ -335,8 +338,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     result.linearSolver = linearSolverType;
   }
   const auto graph = problem->graph();  // collective only when it has to be built
-  result.numNodes = std::size_t(setup.mesh->numNodes());
-  result.numCells = std::size_t(setup.mesh->numCells());
+  result.numNodes = numNodes;
+  result.numCells = numCells;
   result.numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
   result.matrixRows = graph->getGlobalNumRows();
   result.matrixEntries = graph->getGlobalNumEntries();

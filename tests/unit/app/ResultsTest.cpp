@@ -175,7 +175,7 @@ TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
   }
   std::filesystem::create_directories(dir);
   {
-    app::ResultsWriter writer(dir + "/results.e", mesh, disc, {"u"});
+    app::ResultsWriter writer(dir + "/results.e", &mesh, disc, {"u"});
     writer.write(x, {0.0});
   }
   if (Tpetra::getDefaultComm()->getRank() != 0) return;

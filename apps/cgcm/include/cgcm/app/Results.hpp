@@ -29,12 +29,13 @@ void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& c
 
 class ResultsWriter {
  public:
-  /// Creates `path` on rank 0 with `mesh` (the whole mesh that `disc` assembles all or a part of) and the global
+  /// Creates `path` on rank 0 with `mesh` (the whole mesh that `disc` assembles all or a part of; read on
+  /// rank 0 only, null elsewhere allowed) and the global
   /// variables `globals` (stresses with the problem's material of each
   /// body); keptSteps >= 0: continues the existing file after that many
   /// steps (a restart). Throws InputError (rank 0) if it cannot be created
   /// or continued. Collective.
-  ResultsWriter(const std::string& path, const mesh::Mesh& mesh, const Discretization& disc,
+  ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const Discretization& disc,
                 const std::vector<std::string>& globals, int keptSteps = -1);
 
   /// Steps written to the file so far (rank 0; 0 elsewhere).
@@ -55,7 +56,7 @@ class ResultsWriter {
   /// A state by global node id (id * dim + i) in the order of mesh_'s nodes.
   std::vector<Real> inMeshOrder(const std::vector<Real>& byGlobalNode) const;
 
-  const mesh::Mesh& mesh_;
+  const mesh::Mesh* mesh_;  ///< the whole mesh (rank 0)
   const Discretization& disc_;
   std::vector<std::string> globals_;
   bool root_;
