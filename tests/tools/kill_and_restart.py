@@ -4,12 +4,15 @@ SIGKILL once load_curve.csv holds a given share of the reference's rows,
 checks that the killed run's summary says "running", continues it with
 `cgcm --restart DIR`, and compares the continued run's load_curve.csv,
 body_forces.csv (compare_csv.py) and results.e (exo_compare) with the
-reference's. Exit 0 if all agree.
+reference's. Exit 0 if all agree. With --launcher (e.g. "mpirun -np 2") every
+run goes through it, and the kill takes the launcher's whole process group.
 
-usage: kill_and_restart.py --cgcm CGCM --exo-compare EXO --output DIR [--at 0.5] [--rel 1e-8] -- DECK [overrides...]
+usage: kill_and_restart.py --cgcm CGCM --exo-compare EXO --output DIR [--at 0.5] [--rel 1e-8]
+                           [--launcher "MPIRUN ARGS"] -- DECK [overrides...]
 """
 import argparse
 import os
+import shlex
 import shutil
 import signal
 import subprocess
@@ -35,28 +38,31 @@ def main():
     ap.add_argument("--at", type=float, default=0.5, help="share of the reference's rows at the kill")
     ap.add_argument("--rel", type=float, default=1e-8)
     ap.add_argument("--timeout", type=float, default=300.0)
+    ap.add_argument("--launcher", default="", help="command line that starts cgcm (MPI), split as a shell would")
     ap.add_argument("args", nargs="+", help="deck and overrides")
     a = ap.parse_args()
     reference, killed = os.path.join(a.output, "reference"), os.path.join(a.output, "killed")
     for d in (reference, killed):
         shutil.rmtree(d, ignore_errors=True)
     quiet = dict(stdout=subprocess.DEVNULL)
-    r = subprocess.run([a.cgcm] + a.args + ["Output/Directory=" + reference], timeout=a.timeout, **quiet)
+    cgcm = shlex.split(a.launcher) + [a.cgcm]
+    r = subprocess.run(cgcm + a.args + ["Output/Directory=" + reference], timeout=a.timeout, **quiet)
     if r.returncode != 0:
         sys.exit(f"kill_and_restart: the reference run failed (exit {r.returncode})")
     total = rows(os.path.join(reference, "load_curve.csv"))
     at = max(1, int(a.at * total))
 
-    run = subprocess.Popen([a.cgcm] + a.args + ["Output/Directory=" + killed], **quiet)
+    # a session of its own: SIGKILL to its process group takes the MPI launcher and its ranks together
+    run = subprocess.Popen(cgcm + a.args + ["Output/Directory=" + killed], start_new_session=True, **quiet)
     start = time.time()
     while rows(os.path.join(killed, "load_curve.csv")) < at:
         if run.poll() is not None:
             sys.exit(f"kill_and_restart: the run ended (exit {run.returncode}) before {at} rows")
         if time.time() - start > a.timeout:
-            run.kill()
+            os.killpg(run.pid, signal.SIGKILL)
             sys.exit("kill_and_restart: the run did not reach the kill point in time")
         time.sleep(0.005)
-    run.send_signal(signal.SIGKILL)
+    os.killpg(run.pid, signal.SIGKILL)
     run.wait()
     with open(os.path.join(killed, "summary.txt")) as f:
         status = f.readline().strip()
@@ -64,7 +70,7 @@ def main():
     if not status.startswith("running"):
         sys.exit(f"kill_and_restart: the killed run's summary says \"{status}\", not \"running\"")
 
-    r = subprocess.run([a.cgcm, "--restart", killed, "Output/Print Steps=false"], timeout=a.timeout, **quiet)
+    r = subprocess.run(cgcm + ["--restart", killed, "Output/Print Steps=false"], timeout=a.timeout, **quiet)
     if r.returncode != 0:
         sys.exit(f"kill_and_restart: cgcm --restart failed (exit {r.returncode})")
     with open(os.path.join(killed, "summary.txt")) as f:
