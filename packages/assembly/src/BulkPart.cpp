@@ -111,7 +111,6 @@ BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formula
     d.type = blk.type;
     d.numNodes = nn;
     d.name = blk.name;
-    d.cells = cells;
     for (LocalIndex c : cells) d.cellIds.push_back(blk.cellId(c));
     d.dofLids = DofView("dofLids", cells.size(), nn * dim_);
     d.X = CoordView("X", cells.size(), nn, dim_);

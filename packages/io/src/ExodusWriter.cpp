@@ -106,11 +106,6 @@ ExodusWriter::ExodusWriter(const std::string& path, const std::string& title, co
     check(ex_put_coord(exoid_, xyz[0].data(), xyz[1].data(), mesh.dim == 3 ? xyz[2].data() : nullptr), "coordinates");
     const char* coordNames[] = {"x", "y", "z"};
     check(ex_put_coord_names(exoid_, const_cast<char**>(coordNames)), "coordinate names");
-    if (!mesh.nodeIds.empty()) {  // Exodus' node ids (1-based) are the mesh's global ids
-      std::vector<int> ids(mesh.nodeIds.begin(), mesh.nodeIds.end());  // the 32-bit API of this file
-      for (auto& id : ids) ++id;
-      check(ex_put_id_map(exoid_, EX_NODE_MAP, ids.data()), "node id map");
-    }
 
     std::vector<std::string> blockNames;
     for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {

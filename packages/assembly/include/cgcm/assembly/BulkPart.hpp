@@ -57,8 +57,7 @@ class BulkPart {
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> colLids;  // [cell][a*dim+i], matrix column ids
     Kokkos::View<Real***, Kokkos::LayoutRight> X;             // [cell][a][i], reference coordinates
     std::string name;                                         // the mesh block's
-    std::vector<LocalIndex> cells;                            // block-local cell index in the mesh
-    std::vector<LocalIndex> cellIds;                          // the same in the whole mesh (messages)
+    std::vector<LocalIndex> cellIds;                          // block-local cell index in the whole mesh
   };
   const Map* overlap_;
   Formulation formulation_;
