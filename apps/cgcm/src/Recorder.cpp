@@ -69,9 +69,9 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
                   : std::make_unique<io::CsvWriter>(path, columns);
   };
   if (resume) curve = resume->curve;
-  createOnRoot(*disc.dofs->comm(), [&] { csv_ = open(dir + "/load_curve.csv", columns_); });
+  runOnRoot(*disc.dofs->comm(), [&] { csv_ = open(dir + "/load_curve.csv", columns_); });
   if (disc.problem->hasInteraction())
-    createOnRoot(*disc.dofs->comm(), [&] {
+    runOnRoot(*disc.dofs->comm(), [&] {
       bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
   if (exodus)

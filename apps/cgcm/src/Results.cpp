@@ -55,21 +55,6 @@ bool cellStress(const mesh::Mesh& m, const LocalIndex* nodes, const std::vector<
 
 }  // namespace
 
-void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& create) {
-  std::string error;
-  if (comm.getRank() == 0) try {
-      create();
-    } catch (const InputError& e) {
-      error = e.what();
-    }
-  int size = int(error.size());
-  Teuchos::broadcast(comm, 0, &size);
-  if (size == 0) return;
-  error.resize(std::size_t(size));
-  Teuchos::broadcast(comm, 0, size, error.data());
-  throw InputError(error);
-}
-
 ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const Discretization& disc,
                              const std::vector<std::string>& globals, int keptSteps)
     : mesh_(mesh),
@@ -88,7 +73,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, co
   for (const auto& c : stressComponents(disc.problem->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
-  createOnRoot(*disc.dofs->comm(), [&] {
+  runOnRoot(*disc.dofs->comm(), [&] {
     if (!mesh_) throw std::logic_error("ResultsWriter: rank 0 needs the whole mesh");
     writer_ = keptSteps >= 0 ? std::make_unique<io::ExodusWriter>(path, *mesh_, vars, keptSteps)
                              : std::make_unique<io::ExodusWriter>(path, "cgcm", *mesh_, vars);

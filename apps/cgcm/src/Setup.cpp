@@ -1,5 +1,7 @@
 #include "cgcm/app/Setup.hpp"
 
+#include "Distribution.hpp"
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include <algorithm>
@@ -16,7 +18,6 @@
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
-#include "cgcm/mesh/LocalPart.hpp"
 #include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
@@ -820,36 +821,16 @@ ProblemSetup buildProblem(const ParameterList& deck) {
     if (b.get<double>("Distortion") > 0.0)
       mesh::perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));
   }
+  for (const auto& c : s.conditions) s.mesh->nodeSet(c.nodeSet);  // a missing set is named now
   checkBodiesAreHeld(s);
   applyBodyMaterials(deck, s);
   checkVolumeMethodModel(s);
+  s.numNodes = std::size_t(s.mesh->numNodes());
+  s.numCells = std::size_t(s.mesh->numCells());
   return s;
 }
 
 namespace {
-
-// The mesh a rank assembles and its dofs (Discretization::mesh).
-struct Distribution {
-  std::shared_ptr<const mesh::Mesh> mesh;
-  Teuchos::RCP<assembly::DofMap> dofs;
-};
-
-Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup) {
-  const int dim = assembly::formulationDim(setup.formulation);
-  const bool volumeMethod = setup.interaction && setup.interaction->volumeMethod;
-  if (comm->getSize() == 1 || volumeMethod)
-    return {setup.mesh, Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim, setup.partition))};
-  const auto owners = assembly::partitionCells(*comm, *setup.mesh, setup.partition);
-  std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
-  if (setup.contact)
-    for (const auto& name : {setup.contact->upperApex, setup.contact->lowerApex}) {
-      const auto& nodes = setup.mesh->nodeSet(name);
-      probed.insert(probed.end(), nodes.begin(), nodes.end());
-    }
-  auto part = std::make_shared<const mesh::Mesh>(mesh::localPart(*setup.mesh, owners, comm->getRank(), probed));
-  auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *part, dim, assembly::CellPartition::LocalPart));
-  return {std::move(part), std::move(dofs)};
-}
 
 Discretization discretize(const Distribution& dist, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {

@@ -99,7 +99,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 
   // Everything that can be rejected is checked before any work starts.
   const auto setupStart = std::chrono::steady_clock::now();
-  ProblemSetup setup = buildProblem(deck);
+  // rank 0 builds the mesh; the other ranks receive their parts in discretize()
+  const ProblemSetup setup = buildProblem(*comm, deck);
   const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
   const PathPlan plan = planPath(deck.sublist("Loading"), setup);
   auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
@@ -110,7 +111,6 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // rejects bad settings now
   solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim, Teuchos::null, !setup.interaction.has_value());
   const std::string linearSolverType = solver::resolvedLinearSolverType(linearSolverSettings, dim);
-  for (const auto& c : setup.conditions) setup.mesh->nodeSet(c.nodeSet);
   Teuchos::ParameterList loca = deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA");
   {
     // Step sizes in the problem's units unless the deck gives LOCA's own.
@@ -126,7 +126,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
                        "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
     resume = readCheckpoint(dir);
   }
-  createOnRoot(*comm, [&] {
+  runOnRoot(*comm, [&] {
     if (restart) return;  // the folder and its parameters.xml are the run's own
     // the error_code forms: a name the file system refuses is bad input, not an exception
     std::error_code ec;
@@ -148,9 +148,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const Discretization disc = discretize(comm, setup, linearSolverSettings);
   const double distributionSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - distributionStart).count();
-  const auto numNodes = std::size_t(setup.mesh->numNodes()), numCells = std::size_t(setup.mesh->numCells());
-  // From here on only rank 0 reads the whole mesh (results.e); the others assemble on their parts.
-  if (!root && disc.mesh != setup.mesh) setup.mesh.reset();
+  const std::size_t numNodes = setup.numNodes, numCells = setup.numCells;
   if (resume && resume->u.size() != disc.dofs->ownedMap()->getGlobalNumElements())
     throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
                      " unknowns, the deck's problem " +

@@ -1,6 +1,7 @@
 #include "cgcm/assembly/DofMap.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_TieBreak.hpp>
 #include <Zoltan2_BasicVectorAdapter.hpp>
 #include <Zoltan2_PartitioningProblem.hpp>
@@ -20,20 +21,24 @@ CellPartition parseCellPartition(const std::string& name) {
   throw InputError("Solver/Partition = \"" + name + "\": allowed values are \"geometric\" and \"contiguous\"");
 }
 
-std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition) {
+namespace {
+
+// `numParts` parts of the mesh-wide cells, computed by the ranks of `comm`, each of which holds the whole mesh.
+std::vector<int> cellParts(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition, int numParts) {
   if (partition == CellPartition::LocalPart) throw std::logic_error("partitionCells: a local part is partitioned");
+  if (numParts < 1) throw std::logic_error("partitionCells: " + std::to_string(numParts) + " parts");
   const int rank = comm.getRank(), p = comm.getSize();
   const LocalIndex numCells = mesh.numCells();
-  auto first = [&](int r) { return LocalIndex((long long)numCells * r / p); };
+  auto first = [&](int r, int of) { return LocalIndex((long long)numCells * r / of); };
   std::vector<int> owner(numCells, 0);
-  if (p == 1) return owner;
+  if (numParts == 1) return owner;
   if (partition == CellPartition::Contiguous) {
-    for (int r = 0; r < p; ++r)
-      for (LocalIndex c = first(r); c < first(r + 1); ++c) owner[c] = r;
+    for (int r = 0; r < numParts; ++r)
+      for (LocalIndex c = first(r, numParts); c < first(r + 1, numParts); ++c) owner[c] = r;
     return owner;
   }
   // Each rank hands Zoltan2 the centroids of a contiguous share; the parts come back per share and are
-  // summed into the mesh-wide list (every rank holds the whole mesh).
+  // summed into the mesh-wide list.
   const int dim = mesh.dim;
   std::vector<GlobalIndex> ids;
   std::vector<Real> centroids[3], weights;
@@ -41,7 +46,7 @@ std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPa
   for (const auto& block : mesh.blocks) {
     const int npc = mesh::nodesPerCell(block.type);
     for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
-      if (cell < first(rank) || cell >= first(rank + 1)) continue;
+      if (cell < first(rank, p) || cell >= first(rank + 1, p)) continue;
       ids.push_back(cell);
       for (int i = 0; i < dim; ++i) {
         Real x = 0.0;
@@ -56,15 +61,26 @@ std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPa
                   dim == 3 ? centroids[2].data() : nullptr, 1, 1, 1, true, weights.data(), 1);
   Teuchos::ParameterList params;
   params.set("algorithm", "multijagged");
-  params.set("num_global_parts", p);
+  params.set("num_global_parts", numParts);
   params.set("imbalance_tolerance", 1.02);
   Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &params, Teuchos::rcpFromRef(comm));
   problem.solve();
   const auto* parts = problem.getSolution().getPartListView();
   std::vector<int> mine(numCells, 0);
   for (std::size_t k = 0; k < ids.size(); ++k) mine[ids[k]] = int(parts[k]);
+  if (p == 1) return mine;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(numCells), mine.data(), owner.data());
   return owner;
+}
+
+}  // namespace
+
+std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition) {
+  return cellParts(comm, mesh, partition, comm.getSize());
+}
+
+std::vector<int> partitionCells(const mesh::Mesh& mesh, CellPartition partition, int numParts) {
+  return cellParts(Teuchos::SerialComm<int>(), mesh, partition, numParts);
 }
 
 namespace {

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "cgcm/core/Bytes.hpp"
+
 namespace cgcm::mesh {
 
 Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, const std::vector<LocalIndex>& alsoKept) {
@@ -74,6 +76,65 @@ Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
     part.surfaces.push_back(std::move(t));
   }
   return part;
+}
+
+std::vector<char> toBytes(const Mesh& mesh) {
+  core::ByteWriter out;
+  out.put(mesh.dim);
+  out.put(mesh.numBodies);
+  out.put(mesh.coords);
+  out.put(mesh.nodeIds);
+  out.put(std::uint64_t(mesh.blocks.size()));
+  for (const auto& b : mesh.blocks) {
+    out.put(b.name);
+    out.put(b.body);
+    out.put(b.type);
+    out.put(b.connectivity);
+    out.put(b.cellIds);
+  }
+  out.put(std::uint64_t(mesh.nodeSets.size()));
+  for (const auto& [name, nodes] : mesh.nodeSets) {
+    out.put(name);
+    out.put(nodes);
+  }
+  out.put(std::uint64_t(mesh.surfaces.size()));
+  for (const auto& s : mesh.surfaces) {
+    out.put(s.body);
+    out.put(s.nodesPerFacet);
+    out.put(s.facets);
+    out.put(s.facetCells);
+  }
+  return out.take();
+}
+
+Mesh meshFromBytes(const std::vector<char>& bytes) {
+  core::ByteReader in(bytes);
+  Mesh mesh;
+  mesh.dim = in.get<int>();
+  mesh.numBodies = in.get<int>();
+  mesh.coords = in.getVector<Real>();
+  mesh.nodeIds = in.getVector<GlobalIndex>();
+  mesh.blocks.resize(in.get<std::uint64_t>());
+  for (auto& b : mesh.blocks) {
+    b.name = in.getString();
+    b.body = in.get<int>();
+    b.type = in.get<CellType>();
+    b.connectivity = in.getVector<LocalIndex>();
+    b.cellIds = in.getVector<LocalIndex>();
+  }
+  for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
+    std::string name = in.getString();
+    mesh.nodeSets[name] = in.getVector<LocalIndex>();
+  }
+  mesh.surfaces.resize(in.get<std::uint64_t>());
+  for (auto& s : mesh.surfaces) {
+    s.body = in.get<int>();
+    s.nodesPerFacet = in.get<int>();
+    s.facets = in.getVector<LocalIndex>();
+    s.facetCells = in.getVector<LocalIndex>();
+  }
+  if (!in.atEnd()) throw std::logic_error("mesh::meshFromBytes: bytes left over");
+  return mesh;
 }
 
 }  // namespace cgcm::mesh

@@ -96,40 +96,50 @@ std::vector<Real> randomDisplacement(std::size_t n, Real amplitude, unsigned see
   return u;
 }
 
-// A 12^3 hexahedral box with its cells numbered at random, as a mesh generator
-// may number them: the geometric partition gives every cell one owner (the
-// same list on every rank), parts balanced to Zoltan2's 2 % and an interface
-// of about one plane of nodes; contiguous ranges of the shuffled numbering
-// share most nodes.
-TEST(DofMap, GeometricPartitionIsCompactAndBalanced) {
-  auto comm = Tpetra::getDefaultComm();
-  const int p = comm->getSize(), rank = comm->getRank();
+// A 12^3 hexahedral box with its cells numbered at random, as a mesh generator may number them.
+std::shared_ptr<mesh::Mesh> shuffledBox() {
   mesh::BoxSpec spec;
   spec.nx = spec.ny = spec.nz = 12;
   auto m = std::make_shared<mesh::Mesh>(mesh::box(spec));
   auto& conn = m->blocks[0].connectivity;
-  const LocalIndex numCells = m->numCells();
-  std::vector<LocalIndex> order(numCells);
-  for (LocalIndex c = 0; c < numCells; ++c) order[c] = c;
+  std::vector<LocalIndex> order(std::size_t(m->numCells()));
+  for (std::size_t c = 0; c < order.size(); ++c) order[c] = LocalIndex(c);
   std::shuffle(order.begin(), order.end(), std::mt19937(5));
   std::vector<LocalIndex> shuffled;
   for (LocalIndex c : order) shuffled.insert(shuffled.end(), conn.begin() + 8 * c, conn.begin() + 8 * c + 8);
   conn = shuffled;
+  return m;
+}
 
-  // nodes touched by the cells of more than one rank
-  auto sharedNodes = [&](const DofMap& dofs) {
-    std::vector<int> first(m->numNodes(), -1);
-    int shared = 0;
-    std::vector<char> counted(m->numNodes(), 0);
-    for (LocalIndex c = 0; c < numCells; ++c)
-      for (int a = 0; a < 8; ++a) {
-        const LocalIndex n = conn[8 * c + a];
-        const int owner = dofs.cellOwner(c);
-        if (first[n] < 0) first[n] = owner;
-        else if (first[n] != owner && !counted[n]) counted[n] = 1, ++shared;
-      }
-    return shared;
-  };
+// Nodes touched by the cells of more than one part (owner: per cell).
+int sharedNodes(const mesh::Mesh& m, const std::vector<int>& owner) {
+  const auto& conn = m.blocks[0].connectivity;
+  std::vector<int> first(std::size_t(m.numNodes()), -1);
+  std::vector<char> counted(std::size_t(m.numNodes()), 0);
+  int shared = 0;
+  for (std::size_t c = 0; c < owner.size(); ++c)
+    for (int a = 0; a < 8; ++a) {
+      const auto n = std::size_t(conn[8 * c + std::size_t(a)]);
+      if (first[n] < 0) first[n] = owner[c];
+      else if (first[n] != owner[c] && !counted[n]) counted[n] = 1, ++shared;
+    }
+  return shared;
+}
+
+std::vector<int> cellOwners(const DofMap& dofs, LocalIndex numCells) {
+  std::vector<int> owner(static_cast<std::size_t>(numCells));
+  for (LocalIndex c = 0; c < numCells; ++c) owner[std::size_t(c)] = dofs.cellOwner(c);
+  return owner;
+}
+
+// The box's geometric partition gives every cell one owner (the same list on
+// every rank), parts balanced to Zoltan2's 2 % and an interface of about one
+// plane of nodes; contiguous ranges of the shuffled numbering share most nodes.
+TEST(DofMap, GeometricPartitionIsCompactAndBalanced) {
+  auto comm = Tpetra::getDefaultComm();
+  const int p = comm->getSize(), rank = comm->getRank();
+  const auto m = shuffledBox();
+  const LocalIndex numCells = m->numCells();
   DofMap geometric(comm, *m, 3), contiguous(comm, *m, 3, CellPartition::Contiguous);
   std::vector<long long> perRank(p, 0);
   long long ownerSum = 0;
@@ -146,15 +156,44 @@ TEST(DofMap, GeometricPartitionIsCompactAndBalanced) {
   EXPECT_EQ(LocalIndex(geometric.localCells(0).size()), perRank[rank]);
   EXPECT_EQ(geometric.ownedMap()->getGlobalNumElements(), std::size_t(3 * m->numNodes()));
   for (int r = 0; r < p; ++r) EXPECT_LE(perRank[r], 1.02 * numCells / p + 1) << "rank " << r;
+  const int geometricShared = sharedNodes(*m, cellOwners(geometric, numCells));
+  const int contiguousShared = sharedNodes(*m, cellOwners(contiguous, numCells));
   if (p == 1) {
-    EXPECT_EQ(sharedNodes(geometric), 0);
+    EXPECT_EQ(geometricShared, 0);
     return;
   }
   const int plane = 13 * 13;
-  EXPECT_LE(sharedNodes(geometric), 2 * plane);
-  EXPECT_GT(sharedNodes(contiguous), 5 * plane);
-  std::printf("[partition] %d ranks: shared nodes geometric %d, contiguous %d (one plane %d)\n", p,
-              sharedNodes(geometric), sharedNodes(contiguous), plane);
+  EXPECT_LE(geometricShared, 2 * plane);
+  EXPECT_GT(contiguousShared, 5 * plane);
+  std::printf("[partition] %d ranks: shared nodes geometric %d, contiguous %d (one plane %d)\n", p, geometricShared,
+              contiguousShared, plane);
+  // one process cutting the parts of p ranks (a root that sends them) lists the contiguous ranges alike
+  EXPECT_EQ(partitionCells(*m, CellPartition::Contiguous, p), cellOwners(contiguous, numCells));
+}
+
+// One process cutting the box for 2-4 ranks (a root that sends the parts): every part used, balanced
+// to Zoltan2's 2 %, one plane of nodes or so per cut.
+TEST(DofMap, OneProcessCutsTheRanksPartsCompactAndBalanced) {
+  const auto m = shuffledBox();
+  const LocalIndex numCells = m->numCells();
+  const int plane = 13 * 13;
+  for (int parts = 2; parts <= 4; ++parts) {
+    SCOPED_TRACE(parts);
+    const auto owner = partitionCells(*m, CellPartition::Geometric, parts);
+    ASSERT_EQ(owner.size(), std::size_t(numCells));
+    std::vector<LocalIndex> perPart(std::size_t(parts), 0);
+    for (int o : owner) {
+      ASSERT_GE(o, 0);
+      ASSERT_LT(o, parts);
+      ++perPart[std::size_t(o)];
+    }
+    for (LocalIndex n : perPart) {
+      EXPECT_GT(n, 0);
+      EXPECT_LE(n, 1.02 * numCells / parts + 1);
+    }
+    EXPECT_LE(sharedNodes(*m, owner), 2 * (parts - 1) * plane);
+  }
+  EXPECT_EQ(partitionCells(*m, CellPartition::Geometric, 1), std::vector<int>(std::size_t(numCells), 0));
 }
 
 TEST(DofMap, PartitionNamesAreChecked) {

@@ -362,4 +362,44 @@ TEST(LocalPart, HoldsItsCellsTheirNodesAndTheWholeSurface) {
   EXPECT_EQ(cells, whole.numCells());
 }
 
+// A mesh sent to another rank (toBytes, meshFromBytes) arrives whole: a two-body mesh with node sets,
+// and a part with its node ids, cell ids and facets of other ranks' cells. A cut or padded buffer is
+// refused.
+TEST(LocalPart, MeshesTravelAsBytesUnchanged) {
+  BoxSpec spec;
+  spec.x0 = 0.5, spec.nx = 3, spec.ny = 2, spec.nz = 2;
+  Mesh whole = box(spec);
+  mirror(whole, 0);
+  std::vector<int> owner(std::size_t(whole.numCells()));
+  for (std::size_t c = 0; c < owner.size(); ++c) owner[c] = int(c % 2);
+  for (const Mesh& m : {whole, localPart(whole, owner, 1)}) {
+    const Mesh back = meshFromBytes(toBytes(m));
+    EXPECT_EQ(back.dim, m.dim);
+    EXPECT_EQ(back.numBodies, m.numBodies);
+    EXPECT_EQ(back.coords, m.coords);
+    EXPECT_EQ(back.nodeIds, m.nodeIds);
+    EXPECT_EQ(back.nodeSets, m.nodeSets);
+    ASSERT_EQ(back.blocks.size(), m.blocks.size());
+    for (std::size_t b = 0; b < m.blocks.size(); ++b) {
+      EXPECT_EQ(back.blocks[b].name, m.blocks[b].name);
+      EXPECT_EQ(back.blocks[b].body, m.blocks[b].body);
+      EXPECT_EQ(back.blocks[b].type, m.blocks[b].type);
+      EXPECT_EQ(back.blocks[b].connectivity, m.blocks[b].connectivity);
+      EXPECT_EQ(back.blocks[b].cellIds, m.blocks[b].cellIds);
+    }
+    ASSERT_EQ(back.surfaces.size(), m.surfaces.size());
+    for (std::size_t k = 0; k < m.surfaces.size(); ++k) {
+      EXPECT_EQ(back.surfaces[k].body, m.surfaces[k].body);
+      EXPECT_EQ(back.surfaces[k].nodesPerFacet, m.surfaces[k].nodesPerFacet);
+      EXPECT_EQ(back.surfaces[k].facets, m.surfaces[k].facets);
+      EXPECT_EQ(back.surfaces[k].facetCells, m.surfaces[k].facetCells);
+    }
+  }
+  auto bytes = toBytes(whole);
+  bytes.push_back(0);
+  EXPECT_THROW(meshFromBytes(bytes), std::logic_error);
+  bytes.resize(bytes.size() / 2);
+  EXPECT_THROW(meshFromBytes(bytes), std::logic_error);
+}
+
 }  // namespace cgcm::mesh

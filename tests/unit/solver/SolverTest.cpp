@@ -500,7 +500,6 @@ TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
   io::validateDeck(*d, *app::validParameters());
   System sys(*d);
-  const auto& s = sys.setup;
   const auto& dofs = sys.dofs;
   const auto& problem = sys.problem;
   assembly::Vector far(dofs->ownedMap()), near(dofs->ownedMap()), f(dofs->ownedMap());

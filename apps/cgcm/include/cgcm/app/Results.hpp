@@ -12,7 +12,6 @@
 // global variables. The state is gathered to rank 0, which evaluates the
 // fields on the whole mesh (the set-up's, which a rank may assemble only a
 // part of) and writes the file.
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,10 +21,6 @@
 #include "cgcm/io/ExodusWriter.hpp"
 
 namespace cgcm::app {
-
-/// Runs `create` (which writes files) on rank 0 only; an InputError there is
-/// thrown on every rank, with its message. Collective.
-void createOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& create);
 
 class ResultsWriter {
  public:

@@ -3,6 +3,7 @@
 // and the force responses written to the load curve.
 #include <Teuchos_ParameterList.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -77,6 +78,7 @@ struct ProblemSetup {
   /// E0/R0 = Y R0^2 for contact (Y R0 per unit thickness in plane strain), Y
   /// times the loaded area for a block.
   Real forceScale = 1.0;
+  std::size_t numNodes = 0, numCells = 0;  ///< of the whole mesh (every rank knows them, held or not)
 };
 
 /// Every parameter a deck may hold, with defaults and documentation.
@@ -86,9 +88,18 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 /// deck file `deckPath` (before validation; nothing to do without one).
 void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath);
 
+/// Runs `work` on rank 0 only; what it throws is thrown on every rank with its message (an InputError
+/// as InputError, a NumericalError as NumericalError, anything else as std::runtime_error; rank 0
+/// rethrows its own). Collective.
+void runOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& work);
+
 /// Builds the problem a validated deck describes. Throws InputError for
 /// combinations that the validators alone cannot reject.
 ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
+/// The same on several ranks: rank 0 builds the problem (it alone meshes and reads mesh files) and
+/// sends the others its set-up without the mesh; their `mesh` stays null until discretize() sends
+/// them their parts. What rank 0's build throws, every rank throws. Collective.
+ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
 
 assembly::Formulation parseFormulation(const std::string& name);
 
@@ -107,7 +118,8 @@ struct Discretization {
   Teuchos::RCP<solver::ModelEvaluator> model;
 };
 
-/// Distributes and assembles `setup` on `comm`. Collective.
+/// Distributes and assembles `setup` on `comm`: rank 0 partitions its mesh and sends every rank its
+/// part (Method 1: the whole mesh); the other ranks' `setup.mesh`, if any, is not read. Collective.
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver);
 /// The same, with the linear solver built from a validated "Linear Solver"

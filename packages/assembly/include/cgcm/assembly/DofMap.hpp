@@ -30,6 +30,9 @@ CellPartition parseCellPartition(const std::string& name);
 /// The rank of every mesh-wide cell of `mesh` (held whole by every rank), the
 /// same list on every rank: Geometric or Contiguous. Collective.
 std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition);
+/// The same for `numParts` ranks, computed by one process that holds the whole mesh (a root that sends
+/// the parts: mesh::localPart).
+std::vector<int> partitionCells(const mesh::Mesh& mesh, CellPartition partition, int numParts);
 
 class DofMap {
  public:

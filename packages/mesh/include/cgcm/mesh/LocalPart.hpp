@@ -22,4 +22,8 @@ namespace cgcm::mesh {
 Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank,
                const std::vector<LocalIndex>& alsoKept = {});
 
+/// A mesh as bytes, to send to another rank (core::ByteWriter), and back.
+std::vector<char> toBytes(const Mesh& mesh);
+Mesh meshFromBytes(const std::vector<char>& bytes);
+
 }  // namespace cgcm::mesh

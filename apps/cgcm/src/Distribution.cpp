@@ -1,0 +1,253 @@
+// From rank 0 to the others: the problem's set-up without the mesh, and each
+// rank's part of the mesh. Rank 0 alone builds (meshes, reads) the whole mesh.
+#include "Distribution.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <climits>
+#include <exception>
+
+#include "cgcm/core/Bytes.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/mesh/LocalPart.hpp"
+
+namespace cgcm::app {
+
+void runOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& work) {
+  std::exception_ptr failure;
+  int kind = 0;  // 0: done, 1: InputError, 2: NumericalError, 3: anything else
+  std::string message;
+  if (comm.getRank() == 0) try {
+      work();
+    } catch (const InputError& e) {
+      failure = std::current_exception(), kind = 1, message = e.what();
+    } catch (const NumericalError& e) {
+      failure = std::current_exception(), kind = 2, message = e.what();
+    } catch (const std::exception& e) {
+      failure = std::current_exception(), kind = 3, message = e.what();
+    }
+  Teuchos::broadcast(comm, 0, &kind);
+  if (kind == 0) return;
+  int size = int(message.size());
+  Teuchos::broadcast(comm, 0, &size);
+  message.resize(std::size_t(size));
+  Teuchos::broadcast(comm, 0, size, message.data());
+  if (failure) std::rethrow_exception(failure);
+  if (kind == 1) throw InputError(message);
+  if (kind == 2) throw NumericalError(message);
+  throw std::runtime_error(message);
+}
+
+namespace {
+
+// Bytes between ranks, in pieces that an int counts.
+constexpr long long kPiece = 1 << 30;
+
+void sendBytes(const Teuchos::Comm<int>& comm, int to, const std::vector<char>& bytes) {
+  const long long size = (long long)bytes.size();
+  Teuchos::send(comm, 1, &size, to);
+  for (long long at = 0; at < size; at += kPiece)
+    Teuchos::send(comm, int(std::min(kPiece, size - at)), bytes.data() + at, to);
+}
+
+std::vector<char> receiveBytes(const Teuchos::Comm<int>& comm, int from) {
+  long long size = 0;
+  Teuchos::receive(comm, from, 1, &size);
+  std::vector<char> bytes(static_cast<std::size_t>(size));
+  for (long long at = 0; at < size; at += kPiece)
+    Teuchos::receive(comm, from, int(std::min(kPiece, size - at)), bytes.data() + at);
+  return bytes;
+}
+
+void broadcastBytes(const Teuchos::Comm<int>& comm, std::vector<char>& bytes) {
+  long long size = (long long)bytes.size();
+  Teuchos::broadcast(comm, 0, &size);
+  bytes.resize(std::size_t(size));
+  for (long long at = 0; at < size; at += kPiece)
+    Teuchos::broadcast(comm, 0, int(std::min(kPiece, size - at)), bytes.data() + at);
+}
+
+void put(core::ByteWriter& out, const DisplacementCondition& c) {
+  out.put(c.nodeSet);
+  out.put(c.component);
+  out.put(c.offset);
+  out.put(c.scale);
+}
+
+DisplacementCondition getCondition(core::ByteReader& in) {
+  DisplacementCondition c;
+  c.nodeSet = in.getString();
+  c.component = in.get<int>();
+  c.offset = in.get<Real>();
+  c.scale = in.get<Real>();
+  return c;
+}
+
+void put(core::ByteWriter& out, const std::vector<DisplacementCondition>& conditions) {
+  out.put(std::uint64_t(conditions.size()));
+  for (const auto& c : conditions) put(out, c);
+}
+
+std::vector<DisplacementCondition> getConditions(core::ByteReader& in) {
+  std::vector<DisplacementCondition> conditions(in.get<std::uint64_t>());
+  for (auto& c : conditions) c = getCondition(in);
+  return conditions;
+}
+
+void put(core::ByteWriter& out, const ForceResponse& f) {
+  out.put(f.nodeSet);
+  out.put(f.component);
+  out.put(f.sign);
+  out.put(f.scale);
+  out.put(f.direction);
+}
+
+ForceResponse getForceResponse(core::ByteReader& in) {
+  ForceResponse f;
+  f.nodeSet = in.getString();
+  f.component = in.get<int>();
+  f.sign = in.get<Real>();
+  f.scale = in.get<Real>();
+  f.direction = in.getVector<Real>();
+  return f;
+}
+
+// Every field of a set-up but its mesh. The potential travels as its name and
+// scales (interaction::makePotential makes it again).
+std::vector<char> toBytes(const ProblemSetup& s) {
+  core::ByteWriter out;
+  out.put(s.formulation);
+  out.put(s.material);
+  out.put(s.bodyMaterials);
+  put(out, s.conditions);
+  put(out, s.load);
+  put(out, s.initialMotion);
+  out.put(char(s.balance.has_value()));
+  if (s.balance) put(out, *s.balance);
+  out.put(char(s.interaction.has_value()));
+  if (const auto& in = s.interaction) {
+    out.put(in->potential->name());
+    out.put(in->potential->epsilon());
+    out.put(in->potential->r0());
+    out.put(in->densities);
+    out.put(in->options);
+    out.put(in->volumeMethod);
+    out.put(in->volumeOptions);
+    out.put(in->searchRadiusFactor);
+    out.put(in->gammaL);
+    out.put(in->gammaW);
+  }
+  out.put(char(s.contact.has_value()));
+  if (const auto& c = s.contact) {
+    out.put(c->upperApex);
+    out.put(c->lowerApex);
+    out.put(c->upperBody);
+    out.put(c->lowerBody);
+    out.put(c->contactDistance);
+  }
+  out.put(std::uint64_t(s.report.size()));
+  for (const auto& line : s.report) out.put(line);
+  out.put(s.partition);
+  out.put(s.forceScale);
+  out.put(s.numNodes);
+  out.put(s.numCells);
+  return out.take();
+}
+
+ProblemSetup setupFromBytes(const std::vector<char>& bytes) {
+  core::ByteReader in(bytes);
+  ProblemSetup s;
+  s.formulation = in.get<assembly::Formulation>();
+  s.material = in.get<material::NeoHookean>();
+  s.bodyMaterials = in.getVector<material::NeoHookean>();
+  s.conditions = getConditions(in);
+  s.load = getForceResponse(in);
+  s.initialMotion = getConditions(in);
+  if (in.get<char>()) s.balance = getForceResponse(in);
+  if (in.get<char>()) {
+    InteractionSetup i;
+    const std::string potential = in.getString();
+    const Real epsilon = in.get<Real>(), r0 = in.get<Real>();
+    i.potential = interaction::makePotential(potential, epsilon, r0);
+    i.densities = in.getVector<Real>();
+    i.options = in.get<interaction::SurfaceInteractionOptions>();
+    i.volumeMethod = in.get<bool>();
+    i.volumeOptions = in.get<interaction::VolumeInteractionOptions>();
+    i.searchRadiusFactor = in.get<Real>();
+    i.gammaL = in.get<Real>();
+    i.gammaW = in.get<Real>();
+    s.interaction = std::move(i);
+  }
+  if (in.get<char>()) {
+    ContactGeometry c;
+    c.upperApex = in.getString();
+    c.lowerApex = in.getString();
+    c.upperBody = in.get<int>();
+    c.lowerBody = in.get<int>();
+    c.contactDistance = in.get<Real>();
+    s.contact = std::move(c);
+  }
+  s.report.resize(in.get<std::uint64_t>());
+  for (auto& line : s.report) line = in.getString();
+  s.partition = in.get<assembly::CellPartition>();
+  s.forceScale = in.get<Real>();
+  s.numNodes = in.get<std::size_t>();
+  s.numCells = in.get<std::size_t>();
+  if (!in.atEnd()) throw std::logic_error("setupFromBytes: bytes left over");
+  return s;
+}
+
+}  // namespace
+
+ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck) {
+  if (comm.getSize() == 1) return buildProblem(deck);
+  ProblemSetup setup;
+  std::vector<char> bytes;
+  runOnRoot(comm, [&] {
+    setup = buildProblem(deck);
+    bytes = toBytes(setup);
+  });
+  broadcastBytes(comm, bytes);
+  if (comm.getRank() != 0) setup = setupFromBytes(bytes);
+  return setup;
+}
+
+Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup) {
+  const int dim = assembly::formulationDim(setup.formulation);
+  const int rank = comm->getRank(), p = comm->getSize();
+  if (p == 1) return {setup.mesh, Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim, setup.partition))};
+  if (setup.interaction && setup.interaction->volumeMethod) {
+    // Method 1 pairs cells of the whole bodies: every rank holds the whole mesh.
+    std::vector<char> bytes;
+    runOnRoot(*comm, [&] { bytes = mesh::toBytes(*setup.mesh); });
+    broadcastBytes(*comm, bytes);
+    const auto whole = rank == 0 ? std::shared_ptr<const mesh::Mesh>(setup.mesh)
+                                 : std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
+    return {whole, Teuchos::rcp(new assembly::DofMap(comm, *whole, dim, setup.partition))};
+  }
+  // Rank 0 cuts every part before anything is sent: a failure stops all ranks at once.
+  std::vector<std::vector<char>> parts;
+  std::shared_ptr<const mesh::Mesh> mine;
+  runOnRoot(*comm, [&] {
+    const mesh::Mesh& whole = *setup.mesh;
+    const auto owners = assembly::partitionCells(whole, setup.partition, p);
+    std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
+    if (setup.contact)
+      for (const auto& name : {setup.contact->upperApex, setup.contact->lowerApex}) {
+        const auto& nodes = whole.nodeSet(name);
+        probed.insert(probed.end(), nodes.begin(), nodes.end());
+      }
+    for (int r = 1; r < p; ++r) parts.push_back(mesh::toBytes(mesh::localPart(whole, owners, r, probed)));
+    mine = std::make_shared<const mesh::Mesh>(mesh::localPart(whole, owners, 0, probed));
+  });
+  if (rank == 0)
+    for (int r = 1; r < p; ++r) {
+      sendBytes(*comm, r, parts[std::size_t(r - 1)]);
+      std::vector<char>().swap(parts[std::size_t(r - 1)]);
+    }
+  else
+    mine = std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(receiveBytes(*comm, 0)));
+  return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, assembly::CellPartition::LocalPart))};
+}
+
+}  // namespace cgcm::app

@@ -1,0 +1,19 @@
+#pragma once
+// The mesh a rank assembles, and its dofs: what discretize() builds on.
+#include <memory>
+
+#include "cgcm/app/Setup.hpp"
+
+namespace cgcm::app {
+
+struct Distribution {
+  std::shared_ptr<const mesh::Mesh> mesh;  ///< Discretization::mesh
+  Teuchos::RCP<assembly::DofMap> dofs;
+};
+
+/// One rank: the set-up's mesh. Several: rank 0 partitions its mesh (Solver/Partition) and sends each
+/// rank its part (mesh::localPart, with the contact probe's apex nodes); Method 1: the whole mesh to
+/// every rank. Collective.
+Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup);
+
+}  // namespace cgcm::app

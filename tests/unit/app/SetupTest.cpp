@@ -1,0 +1,168 @@
+// A problem built on rank 0 and sent to the other ranks (app::buildProblem(comm, deck)) is, field by
+// field, the problem each rank builds from the deck itself, without the mesh; what rank 0's build
+// throws stops every rank with the same message. Meaningful on two ranks (mpi_app_tests_np2); on one
+// it checks that the single rank keeps the mesh.
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+
+#include "cgcm/app/Setup.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/io/Deck.hpp"
+
+namespace cgcm {
+namespace {
+
+Teuchos::RCP<Teuchos::ParameterList> deckFrom(const std::string& file, const std::vector<std::string>& overrides) {
+  auto d = io::readDeck(file);
+  app::resolveMeshFile(*d, file);
+  io::applyOverrides(*d, *app::validParameters(), overrides);
+  io::validateDeck(*d, *app::validParameters());
+  return d;
+}
+
+void expectSame(const app::DisplacementCondition& a, const app::DisplacementCondition& b) {
+  EXPECT_EQ(a.nodeSet, b.nodeSet);
+  EXPECT_EQ(a.component, b.component);
+  EXPECT_EQ(a.offset, b.offset);
+  EXPECT_EQ(a.scale, b.scale);
+}
+
+void expectSame(const std::vector<app::DisplacementCondition>& a, const std::vector<app::DisplacementCondition>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) expectSame(a[k], b[k]);
+}
+
+void expectSame(const app::ForceResponse& a, const app::ForceResponse& b) {
+  EXPECT_EQ(a.nodeSet, b.nodeSet);
+  EXPECT_EQ(a.component, b.component);
+  EXPECT_EQ(a.sign, b.sign);
+  EXPECT_EQ(a.scale, b.scale);
+  EXPECT_EQ(a.direction, b.direction);
+}
+
+void expectSame(const material::NeoHookean& a, const material::NeoHookean& b) {
+  EXPECT_EQ(a.lambda, b.lambda);
+  EXPECT_EQ(a.mu, b.mu);
+  EXPECT_EQ(a.law, b.law);
+  EXPECT_EQ(a.kinematics, b.kinematics);
+}
+
+// `sent` (received from rank 0, or rank 0's own) against `own` (built by this rank from the deck).
+void expectSameSetUp(const app::ProblemSetup& sent, const app::ProblemSetup& own) {
+  EXPECT_EQ(sent.formulation, own.formulation);
+  expectSame(sent.material, own.material);
+  ASSERT_EQ(sent.bodyMaterials.size(), own.bodyMaterials.size());
+  for (std::size_t b = 0; b < own.bodyMaterials.size(); ++b) expectSame(sent.bodyMaterials[b], own.bodyMaterials[b]);
+  expectSame(sent.conditions, own.conditions);
+  expectSame(sent.load, own.load);
+  expectSame(sent.initialMotion, own.initialMotion);
+  ASSERT_EQ(sent.balance.has_value(), own.balance.has_value());
+  if (own.balance) expectSame(*sent.balance, *own.balance);
+  ASSERT_EQ(sent.interaction.has_value(), own.interaction.has_value());
+  if (own.interaction) {
+    const auto &a = *sent.interaction, &b = *own.interaction;
+    EXPECT_EQ(a.potential->name(), b.potential->name());
+    EXPECT_EQ(a.potential->epsilon(), b.potential->epsilon());
+    EXPECT_EQ(a.potential->r0(), b.potential->r0());
+    for (const Real r : {0.9, 1.0, 1.7, 4.0}) {
+      EXPECT_EQ(a.potential->phi(r * b.potential->r0()), b.potential->phi(r * b.potential->r0()));
+      EXPECT_EQ(a.potential->halfSpace(r * b.potential->r0()), b.potential->halfSpace(r * b.potential->r0()));
+    }
+    EXPECT_EQ(a.densities, b.densities);
+    EXPECT_EQ(a.options.formulation, b.options.formulation);
+    EXPECT_EQ(a.options.quadraturePoints, b.options.quadraturePoints);
+    EXPECT_EQ(a.options.cutoff, b.options.cutoff);
+    EXPECT_EQ(a.options.cutoffTaper, b.options.cutoffTaper);
+    EXPECT_EQ(a.options.search, b.options.search);
+    EXPECT_EQ(a.options.projectionSmoothing, b.options.projectionSmoothing);
+    EXPECT_EQ(a.volumeMethod, b.volumeMethod);
+    EXPECT_EQ(a.volumeOptions.formulation, b.volumeOptions.formulation);
+    EXPECT_EQ(a.volumeOptions.quadratureOrder, b.volumeOptions.quadratureOrder);
+    EXPECT_EQ(a.volumeOptions.maxQuadratureOrder, b.volumeOptions.maxQuadratureOrder);
+    EXPECT_EQ(a.volumeOptions.cutoff, b.volumeOptions.cutoff);
+    EXPECT_EQ(a.volumeOptions.skin, b.volumeOptions.skin);
+    EXPECT_EQ(a.searchRadiusFactor, b.searchRadiusFactor);
+    EXPECT_EQ(a.gammaL, b.gammaL);
+    EXPECT_EQ(a.gammaW, b.gammaW);
+  }
+  ASSERT_EQ(sent.contact.has_value(), own.contact.has_value());
+  if (own.contact) {
+    EXPECT_EQ(sent.contact->upperApex, own.contact->upperApex);
+    EXPECT_EQ(sent.contact->lowerApex, own.contact->lowerApex);
+    EXPECT_EQ(sent.contact->upperBody, own.contact->upperBody);
+    EXPECT_EQ(sent.contact->lowerBody, own.contact->lowerBody);
+    EXPECT_EQ(sent.contact->contactDistance, own.contact->contactDistance);
+  }
+  EXPECT_EQ(sent.report, own.report);
+  EXPECT_EQ(sent.partition, own.partition);
+  EXPECT_EQ(sent.forceScale, own.forceScale);
+  EXPECT_EQ(sent.numNodes, std::size_t(own.mesh->numNodes()));
+  EXPECT_EQ(sent.numCells, std::size_t(own.mesh->numCells()));
+}
+
+TEST(Setup, RankZeroBuildsTheProblemAndTheOtherRanksReceiveItWithoutTheMesh) {
+  const auto comm = Tpetra::getDefaultComm();
+  const std::string inputs = CGCM_INPUTS;
+  struct Case {
+    std::string name, file;
+    std::vector<std::string> overrides;
+  };
+  const Case cases[] = {
+      // axisymmetric benchmark: interaction, contact probe, balance, initial motion; another potential
+      {"benchmark, Morse", inputs + "/sphere-on-half-space.xml",
+       {"Interaction/Potential=Morse", "Solver/Partition=contiguous"}},
+      // 3D gmsh, mirrored: many bodies, a material of their own, drive vector components, symmetric load scale
+      {"three spheres",
+       inputs + "/3d/three-spheres.xml",
+       {"Geometry/Mesh Numbers/lcContact=0.2", "Geometry/Mesh Numbers/lcSphere=0.4", "Geometry/Mesh Numbers/lcFar=2.0",
+        "Bodies/outer sphere/Young's Modulus=2"}},
+      // no interaction
+      {"block", inputs + "/sphere-on-half-space.xml",
+       {"Geometry/Type=block", "Problem/Formulation=plane strain", "Loading/Approach Path={0, -0.1}"}},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto deck = deckFrom(c.file, c.overrides);
+    const auto sent = app::buildProblem(*comm, *deck);
+    const auto own = app::buildProblem(*deck);
+    ASSERT_EQ(sent.mesh != nullptr, comm->getRank() == 0) << "only rank 0 holds the whole mesh";
+    if (sent.mesh) {
+      EXPECT_EQ(sent.mesh->numNodes(), own.mesh->numNodes());
+      EXPECT_EQ(sent.mesh->coords, own.mesh->coords);
+    }
+    expectSameSetUp(sent, own);
+  }
+}
+
+TEST(Setup, WhatRankZerosBuildThrowsEveryRankThrows) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto deck = deckFrom(std::string(CGCM_INPUTS) + "/3d/three-spheres.xml", {"Geometry/File=no-such-mesh.geo"});
+  std::string message;
+  try {
+    app::buildProblem(*comm, *deck);
+    ADD_FAILURE() << "a missing mesh file was accepted";
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("no-such-mesh.geo"), std::string::npos) << message;
+
+  // the kinds of error keep their types on every rank
+  EXPECT_THROW(app::runOnRoot(*comm, [] { throw NumericalError("a failed evaluation"); }), NumericalError);
+  try {
+    app::runOnRoot(*comm, [] { throw std::logic_error("a broken invariant"); });
+    ADD_FAILURE() << "nothing thrown";
+  } catch (const InputError&) {
+    ADD_FAILURE() << "a logic error became bad input";
+  } catch (const NumericalError&) {
+    ADD_FAILURE() << "a logic error became a numerical error";
+  } catch (const std::exception& e) {
+    EXPECT_STREQ(e.what(), "a broken invariant");
+  }
+  int calls = 0;
+  app::runOnRoot(*comm, [&] { ++calls; });
+  EXPECT_EQ(calls, comm->getRank() == 0 ? 1 : 0);
+}
+
+}  // namespace
+}  // namespace cgcm
