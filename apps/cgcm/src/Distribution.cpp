@@ -4,8 +4,10 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include <climits>
+#include <algorithm>
 #include <exception>
+#include <stdexcept>
+#include <string>
 
 #include "cgcm/core/Bytes.hpp"
 #include "cgcm/core/Error.hpp"
@@ -14,27 +16,30 @@
 namespace cgcm::app {
 
 void runOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& work) {
+  enum Outcome : int { Done, BadInput, FailedEvaluation, OtherError };
   std::exception_ptr failure;
-  int kind = 0;  // 0: done, 1: InputError, 2: NumericalError, 3: anything else
+  int outcome = Done;
   std::string message;
   if (comm.getRank() == 0) try {
       work();
     } catch (const InputError& e) {
-      failure = std::current_exception(), kind = 1, message = e.what();
+      failure = std::current_exception(), outcome = BadInput, message = e.what();
     } catch (const NumericalError& e) {
-      failure = std::current_exception(), kind = 2, message = e.what();
+      failure = std::current_exception(), outcome = FailedEvaluation, message = e.what();
     } catch (const std::exception& e) {
-      failure = std::current_exception(), kind = 3, message = e.what();
+      failure = std::current_exception(), outcome = OtherError, message = e.what();
+    } catch (...) {
+      failure = std::current_exception(), outcome = OtherError, message = "unknown error";
     }
-  Teuchos::broadcast(comm, 0, &kind);
-  if (kind == 0) return;
+  Teuchos::broadcast(comm, 0, &outcome);
+  if (outcome == Done) return;
   int size = int(message.size());
   Teuchos::broadcast(comm, 0, &size);
   message.resize(std::size_t(size));
   Teuchos::broadcast(comm, 0, size, message.data());
   if (failure) std::rethrow_exception(failure);
-  if (kind == 1) throw InputError(message);
-  if (kind == 2) throw NumericalError(message);
+  if (outcome == BadInput) throw InputError(message);
+  if (outcome == FailedEvaluation) throw NumericalError(message);
   throw std::runtime_error(message);
 }
 
@@ -57,6 +62,22 @@ std::vector<char> receiveBytes(const Teuchos::Comm<int>& comm, int from) {
   for (long long at = 0; at < size; at += kPiece)
     Teuchos::receive(comm, from, int(std::min(kPiece, size - at)), bytes.data() + at);
   return bytes;
+}
+
+// Runs `decode` on every rank; if it fails on any, every rank throws (the ranks stay in step).
+template <class Decode>
+void decodeOnEveryRank(const Teuchos::Comm<int>& comm, Decode decode) {
+  std::string error;
+  try {
+    decode();
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  int failed = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, int(!error.empty()), Teuchos::outArg(failed));
+  if (failed)
+    throw std::logic_error("rank " + std::to_string(comm.getRank()) + ": what rank 0 sent " +
+                           (error.empty() ? "could not be read on another rank" : "could not be read: " + error));
 }
 
 void broadcastBytes(const Teuchos::Comm<int>& comm, std::vector<char>& bytes) {
@@ -89,7 +110,7 @@ void put(core::ByteWriter& out, const std::vector<DisplacementCondition>& condit
 }
 
 std::vector<DisplacementCondition> getConditions(core::ByteReader& in) {
-  std::vector<DisplacementCondition> conditions(in.get<std::uint64_t>());
+  std::vector<DisplacementCondition> conditions(in.getCount(1));
   for (auto& c : conditions) c = getCondition(in);
   return conditions;
 }
@@ -187,7 +208,7 @@ ProblemSetup setupFromBytes(const std::vector<char>& bytes) {
     c.contactDistance = in.get<Real>();
     s.contact = std::move(c);
   }
-  s.report.resize(in.get<std::uint64_t>());
+  s.report.resize(in.getCount(sizeof(std::uint64_t)));
   for (auto& line : s.report) line = in.getString();
   s.partition = in.get<assembly::CellPartition>();
   s.forceScale = in.get<Real>();
@@ -208,45 +229,51 @@ ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::Paramet
     bytes = toBytes(setup);
   });
   broadcastBytes(comm, bytes);
-  if (comm.getRank() != 0) setup = setupFromBytes(bytes);
+  decodeOnEveryRank(comm, [&] {
+    if (comm.getRank() != 0) setup = setupFromBytes(bytes);
+  });
   return setup;
 }
 
 Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup) {
   const int dim = assembly::formulationDim(setup.formulation);
   const int rank = comm->getRank(), p = comm->getSize();
+  if (rank == 0 && !setup.mesh) throw std::logic_error("distribute: rank 0 needs the whole mesh");
   if (p == 1) return {setup.mesh, Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim, setup.partition))};
+  std::shared_ptr<const mesh::Mesh> mine;
   if (setup.interaction && setup.interaction->volumeMethod) {
     // Method 1 pairs cells of the whole bodies: every rank holds the whole mesh.
     std::vector<char> bytes;
     runOnRoot(*comm, [&] { bytes = mesh::toBytes(*setup.mesh); });
     broadcastBytes(*comm, bytes);
-    const auto whole = rank == 0 ? std::shared_ptr<const mesh::Mesh>(setup.mesh)
-                                 : std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
-    return {whole, Teuchos::rcp(new assembly::DofMap(comm, *whole, dim, setup.partition))};
+    decodeOnEveryRank(*comm, [&] {
+      mine = rank == 0 ? setup.mesh : std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
+    });
+    return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, setup.partition))};
   }
-  // Rank 0 cuts every part before anything is sent: a failure stops all ranks at once.
-  std::vector<std::vector<char>> parts;
-  std::shared_ptr<const mesh::Mesh> mine;
+  // Rank 0 cuts the parts one at a time and sends each before the next (its memory: the whole mesh and
+  // two parts); a failure to cut one stops every rank at once.
+  std::vector<int> owners;
+  std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
   runOnRoot(*comm, [&] {
-    const mesh::Mesh& whole = *setup.mesh;
-    const auto owners = assembly::partitionCells(whole, setup.partition, p);
-    std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
+    owners = assembly::partitionCells(*setup.mesh, setup.partition, p);
     if (setup.contact)
       for (const auto& name : {setup.contact->upperApex, setup.contact->lowerApex}) {
-        const auto& nodes = whole.nodeSet(name);
+        const auto& nodes = setup.mesh->nodeSet(name);
         probed.insert(probed.end(), nodes.begin(), nodes.end());
       }
-    for (int r = 1; r < p; ++r) parts.push_back(mesh::toBytes(mesh::localPart(whole, owners, r, probed)));
-    mine = std::make_shared<const mesh::Mesh>(mesh::localPart(whole, owners, 0, probed));
   });
-  if (rank == 0)
-    for (int r = 1; r < p; ++r) {
-      sendBytes(*comm, r, parts[std::size_t(r - 1)]);
-      std::vector<char>().swap(parts[std::size_t(r - 1)]);
-    }
-  else
-    mine = std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(receiveBytes(*comm, 0)));
+  std::vector<char> bytes;
+  for (int r = 1; r < p; ++r) {
+    runOnRoot(*comm, [&] { bytes = mesh::toBytes(mesh::localPart(*setup.mesh, owners, r, probed)); });
+    if (rank == 0) sendBytes(*comm, r, bytes);
+    if (rank == r) bytes = receiveBytes(*comm, 0);
+  }
+  if (rank == 0) std::vector<char>().swap(bytes);
+  runOnRoot(*comm, [&] { mine = std::make_shared<const mesh::Mesh>(mesh::localPart(*setup.mesh, owners, 0, probed)); });
+  decodeOnEveryRank(*comm, [&] {
+    if (rank != 0) mine = std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
+  });
   return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, assembly::CellPartition::LocalPart))};
 }
 

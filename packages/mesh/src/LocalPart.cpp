@@ -114,7 +114,7 @@ Mesh meshFromBytes(const std::vector<char>& bytes) {
   mesh.numBodies = in.get<int>();
   mesh.coords = in.getVector<Real>();
   mesh.nodeIds = in.getVector<GlobalIndex>();
-  mesh.blocks.resize(in.get<std::uint64_t>());
+  mesh.blocks.resize(in.getCount(1));
   for (auto& b : mesh.blocks) {
     b.name = in.getString();
     b.body = in.get<int>();
@@ -122,11 +122,11 @@ Mesh meshFromBytes(const std::vector<char>& bytes) {
     b.connectivity = in.getVector<LocalIndex>();
     b.cellIds = in.getVector<LocalIndex>();
   }
-  for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
+  for (auto n = in.getCount(1); n > 0; --n) {
     std::string name = in.getString();
     mesh.nodeSets[name] = in.getVector<LocalIndex>();
   }
-  mesh.surfaces.resize(in.get<std::uint64_t>());
+  mesh.surfaces.resize(in.getCount(1));
   for (auto& s : mesh.surfaces) {
     s.body = in.get<int>();
     s.nodesPerFacet = in.get<int>();

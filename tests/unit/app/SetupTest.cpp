@@ -126,7 +126,8 @@ TEST(Setup, RankZeroBuildsTheProblemAndTheOtherRanksReceiveItWithoutTheMesh) {
     const auto deck = deckFrom(c.file, c.overrides);
     const auto sent = app::buildProblem(*comm, *deck);
     const auto own = app::buildProblem(*deck);
-    ASSERT_EQ(sent.mesh != nullptr, comm->getRank() == 0) << "only rank 0 holds the whole mesh";
+    // EXPECT, not ASSERT: a rank leaving the loop alone would leave the others in buildProblem's collectives
+    EXPECT_EQ(sent.mesh != nullptr, comm->getRank() == 0) << "only rank 0 holds the whole mesh";
     if (sent.mesh) {
       EXPECT_EQ(sent.mesh->numNodes(), own.mesh->numNodes());
       EXPECT_EQ(sent.mesh->coords, own.mesh->coords);
@@ -162,6 +163,22 @@ TEST(Setup, WhatRankZerosBuildThrowsEveryRankThrows) {
   int calls = 0;
   app::runOnRoot(*comm, [&] { ++calls; });
   EXPECT_EQ(calls, comm->getRank() == 0 ? 1 : 0);
+}
+
+// A part that rank 0 cannot cut (a node of no cell) stops every rank with its message.
+TEST(Setup, APartRankZeroCannotCutStopsEveryRank) {
+  const auto comm = Tpetra::getDefaultComm();
+  if (comm->getSize() == 1) GTEST_SKIP() << "several ranks";
+  const auto deck = deckFrom(std::string(CGCM_INPUTS) + "/sphere-on-half-space.xml",
+                             {"Geometry/Type=block", "Problem/Formulation=plane strain"});
+  auto setup = app::buildProblem(*comm, *deck);
+  if (setup.mesh) setup.mesh->coords.insert(setup.mesh->coords.end(), {9.0, 9.0});
+  try {
+    app::discretize(comm, setup, deck->sublist("Solver").sublist("Linear Solver"));
+    ADD_FAILURE() << "a node of no cell was distributed";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("belongs to no cell"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -57,7 +57,7 @@ struct ContactGeometry {
 };
 
 struct ProblemSetup {
-  std::shared_ptr<mesh::Mesh> mesh;
+  std::shared_ptr<mesh::Mesh> mesh;  ///< the whole mesh; null on ranks other than 0 of buildProblem(comm, deck)
   assembly::Formulation formulation;
   material::NeoHookean material;  ///< the deck's Material: every body's unless bodyMaterials says otherwise
   /// Per body (index = body id): Material overridden by Bodies/<name>; empty: `material` everywhere.
@@ -97,8 +97,8 @@ void runOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& work
 /// combinations that the validators alone cannot reject.
 ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 /// The same on several ranks: rank 0 builds the problem (it alone meshes and reads mesh files) and
-/// sends the others its set-up without the mesh; their `mesh` stays null until discretize() sends
-/// them their parts. What rank 0's build throws, every rank throws. Collective.
+/// sends the others its set-up without the mesh (their `mesh` is null; discretize() gives each its
+/// part as Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
 ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
 
 assembly::Formulation parseFormulation(const std::string& name);

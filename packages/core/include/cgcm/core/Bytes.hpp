@@ -39,10 +39,12 @@ class ByteWriter {
   std::vector<char> bytes_;
 };
 
-/// Reads what a ByteWriter wrote; reading past the end throws std::logic_error.
+/// Reads what a ByteWriter wrote (`bytes` must outlive the reader); reading past the end, or a count
+/// beyond it, throws std::logic_error.
 class ByteReader {
  public:
   explicit ByteReader(const std::vector<char>& bytes) : bytes_(bytes) {}
+  ByteReader(std::vector<char>&&) = delete;
   template <class T>
   T get() {
     static_assert(std::is_trivially_copyable_v<T>, "ByteReader::get: plain data only");
@@ -52,6 +54,7 @@ class ByteReader {
   }
   template <class T>
   std::vector<T> getVector() {
+    static_assert(std::is_trivially_copyable_v<T>, "ByteReader::getVector: plain data only");
     std::vector<T> values(count(sizeof(T)));
     copy(values.data(), values.size() * sizeof(T));
     return values;
@@ -61,6 +64,8 @@ class ByteReader {
     copy(text.data(), text.size());
     return text;
   }
+  /// A count the writer put before items of at least `itemSize` bytes each (checked against the rest).
+  std::size_t getCount(std::size_t itemSize) { return count(itemSize); }
   bool atEnd() const { return position_ == bytes_.size(); }
 
  private:
