@@ -79,8 +79,9 @@ jkr-study: build
 
 # Pull-off force over Tabor mu 0.05 .. 5 at gammaL = 50 and 200, finite and
 # small strain on the same meshes (tools/pulloff_map.py): output/pulloff-map,
-# and the plot into doc/figures. Finished runs are reused; PULLOFF_MAX_LEVEL=3
-# resolves the mu = 5 cohesive zone (cells of half its length, hours).
+# and the plot into doc/figures. Finished runs are reused. Cases needing a
+# graded mesh finer than PULLOFF_MAX_LEVEL (mu = 5) run on the band mesh
+# (meshes/sphere-on-half-space-band.geo).
 PULLOFF_MAX_LEVEL ?= 2
 pulloff-map: build
 	/usr/bin/python3 tools/pulloff_map.py --build $(BUILD_DIR) --output output/pulloff-map --jobs $(JOBS) \

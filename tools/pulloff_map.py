@@ -10,18 +10,21 @@ strain, Derjaguin; cgcm-analytic ljsphere) and Maugis-Dugdale (lambda =
 Each case is planned from the Maugis-Dugdale curve at the theoretical
 lambda (cgcm-analytic map, curve, pulloff): the approach ends at the zero-load
 contact, the retraction halfway between the load- and the
-displacement-control pull-off; the finest cells (Contact Zone Size / 20 /
-2^level) are at most 0.4 of the cohesive length E* r_S0^2 / w and r0, over
-1.3 zero-load contact radii and at least to where the gap is 4 r0 (R = 1). P_min is the vertex of the parabola through the
-lowest state and its neighbours.
+displacement-control pull-off; the finest cells are at most 0.4 (0.25 from
+mu = 5 on) of the cohesive length E* r_S0^2 / w and at most r0, over 1.3
+zero-load contact radii and at least to where the gap is 4 r0 (R = 1). The
+mesh is the built-in graded one (cells Contact Zone Size / 20 / 2^level) up to
+--max-level, beyond it meshes/sphere-on-half-space-band.geo, whose fine cells
+lie only in a band under the surfaces. P_min is the vertex of the parabola
+through the lowest state and its neighbours.
 
 Writes table.csv and pulloff_map.png into --output.
 
     pulloff_map.py --build build --output output/pulloff-map [--gammaL 50 200 --mu 0.05 0.1 ...]
-                   [--jobs 2] [--max-level 2] [--plan] [--plot-only]
+                   [--jobs 2] [--max-level 2] [--mesh auto|graded|band] [--cell-size 0.4]
+                   [--rerun] [--plan] [--plot-only]
 
-The default grid: gammaL = 50 at mu = 0.05, 0.1, 0.2, 0.5, 1, 2, 5 and
-gammaL = 200 at the same mu up to 2.
+The default grid: gammaL = 50 and 200 at mu = 0.05, 0.1, 0.2, 0.5, 1, 2, 5.
 """
 import argparse
 import concurrent.futures
@@ -55,8 +58,10 @@ def gamma_w_for(gl, mu):
     return (mu1 / mu) ** 1.5
 
 
-def plan(gl, mu, max_level):
-    """Deck overrides and scales of one case."""
+def plan(gl, mu, max_level, mesh="auto", cell_size=0.4):
+    """Deck overrides and scales of one case: the graded built-in mesh at the level giving cells of
+    cell_size cohesive lengths (at most r0), or the band mesh (meshes/sphere-on-half-space-band.geo)
+    with cells that size where that level is above max_level (mesh = "auto") or always (mesh = "band")."""
     gw = gamma_w_for(gl, mu)
     m = {k: float(v) for k, v in analytic("map", "--gammaL", f"{gl:.12g}", "--gammaW", f"{gw:.12g}",
                                           "--nu", f"{NU}")[0].items()}
@@ -73,21 +78,31 @@ def plan(gl, mu, max_level):
     u_start = f_d * d_disp - 3.0 * rs0
     a0 = f_a * float(zero["a"])
     ell = m["f_E"] * rs0 ** 2 / m["w"]  # E* = f_E Y of the two bodies together
-    cell_max = min(0.4 * ell, r0)
+    cell_max = min(cell_size * ell, r0)
     # the fine cells reach where the gap is 4 r0: at the DMT end the force is gathered out there
     # (zone 0.05 instead of 0.2 at gammaL = 200, mu = 0.05: P_min 2.4 % weaker; 0.4: 0.0005 % stronger)
-    zone = min(1.0, max(1.3 * a0, math.sqrt(8.0 * r0)))
-    level = min(max_level, max(0, math.ceil(math.log2(zone / 20 / cell_max))))
+    zone = min(0.85, max(1.3 * a0, math.sqrt(8.0 * r0)))
+    level = max(0, math.ceil(math.log2(zone / 20 / cell_max)))
     step = (u_in - u_end) / 60
+    if mesh == "band" or (mesh == "auto" and level > max_level):
+        # fine cells only in a band under the surfaces: a graded block of that level would carry its
+        # fine columns through the whole depth (mu = 5, gammaL = 50: 8k nodes against 320k at level 4)
+        geometry = ["Geometry/Type=gmsh", f"Geometry/File={os.path.join(ROOT, 'meshes', 'sphere-on-half-space-band.geo')}",
+                    f"Geometry/Mesh Numbers/zone={zone:.4g}", f"Geometry/Mesh Numbers/lc={cell_max:.4g}",
+                    f"Geometry/Mesh Numbers/gap={rs0:.6g}"]
+        label, cell = f"band {cell_max:.3g}", cell_max
+    else:
+        level = min(level, max_level)
+        geometry = [f"Geometry/Mesh Refinement={level}", f"Geometry/Contact Zone Size={zone:.4g}"]
+        label, cell = f"level {level}", zone / 20 / 2 ** level
     overrides = [
-        f"Interaction/gammaL={gl:.12g}", f"Interaction/gammaW={gw:.12g}",
-        f"Geometry/Mesh Refinement={level}", f"Geometry/Contact Zone Size={zone:.4g}",
+        f"Interaction/gammaL={gl:.12g}", f"Interaction/gammaW={gw:.12g}", *geometry,
         f"Loading/Approach Path={{{u_start:.6g},{u_in:.6g},{u_end:.6g}}}",
         f"Loading/Initial Increment={step:.6g}", f"Loading/Max Increment={step:.6g}",
         f"Loading/Min Increment={step * 1e-5:.6g}", "Output/Print Steps=false", "Output/Exodus=false",
         "Output/Checkpoint=false"]
-    return {"gammaL": gl, "gammaW": gw, "mu": m["mu_tabor"], "lambda": lam, "w": m["w"], "level": level,
-            "zone": zone, "cell_over_ell": zone / 20 / 2 ** level / ell, "overrides": overrides}
+    return {"gammaL": gl, "gammaW": gw, "mu": m["mu_tabor"], "lambda": lam, "w": m["w"], "mesh": label,
+            "zone": zone, "cells_across": zone / cell, "cell_over_ell": cell / ell, "overrides": overrides}
 
 
 def minimum_force(csv_path):
@@ -157,7 +172,13 @@ def main():
     ap.add_argument("--mu", type=float, nargs="+")
     ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
     ap.add_argument("--max-level", type=int, default=2,
-                    help="cap of the mesh level (the table gives the cells' size over the cohesive length)")
+                    help="the finest level of the graded mesh; cases needing a finer one use the band mesh")
+    ap.add_argument("--mesh", choices=("auto", "graded", "band"), default="auto",
+                    help="graded: the built-in mesh at most at --max-level; band: "
+                         "meshes/sphere-on-half-space-band.geo; auto: graded unless it needs more than --max-level")
+    ap.add_argument("--cell-size", type=float,
+                    help="the finest cells in cohesive lengths E* r_S0^2 / w (and at most r0); "
+                         "default 0.4, and 0.25 at mu >= 5 (CELL_SIZE)")
     ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
     ap.add_argument("--plan", action="store_true", help="print the cases and their meshes, run nothing")
     ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
@@ -170,15 +191,17 @@ def main():
         grid = DEFAULT_GRID
         if args.gammaL or args.mu:
             grid = [(gl, mu) for gl in args.gammaL or [50.0, 200.0] for mu in args.mu or MUS]
-        cases = [plan(gl, mu, args.max_level) for gl, mu in grid]
+        if args.cell_size is not None and not args.cell_size > 0.0:
+            ap.error(f"--cell-size must be > 0 (cohesive lengths), not {args.cell_size}")
+        cases = [plan(gl, mu, args.max_level, args.mesh, args.cell_size or cell_size_for(mu)) for gl, mu in grid]
         for c in cases:
             print(f"gammaL {c['gammaL']:g}, mu {c['mu']:.3g}: gammaW {c['gammaW']:.4g}, lambda {c['lambda']:.3g}, "
-                  f"level {c['level']}, zone {c['zone']:.3g} (cells {c['cell_over_ell']:.2f} of the cohesive length), "
-                  f"path {c['overrides'][4].split('=')[1]}", flush=True)
+                  f"{c['mesh']}, zone {c['zone']:.3g} (cells {c['cell_over_ell']:.2f} of the cohesive length), "
+                  f"path {next(o for o in c['overrides'] if o.startswith('Loading/Approach Path=')).split('=')[1]}", flush=True)
         if args.plan:
             return
         # the cheap (coarse) cases first
-        jobs = [(c, k) for c in sorted(cases, key=lambda c: c["level"]) for k in ("finite strain", "small strain")]
+        jobs = [(c, k) for c in sorted(cases, key=lambda c: c["cells_across"]) for k in ("finite strain", "small strain")]
         results = {}
         with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
             for name, r in pool.map(lambda job: run_case(job[0], job[1], args.output, args.rerun), jobs):
@@ -187,7 +210,7 @@ def main():
                       f"{'' if r.get('inside', True) else ' (at the end of the path)'}", flush=True)
         with open(table, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["gammaL", "gammaW", "mu", "lambda", "level", "zone", "cell_over_ell", "unknowns",
+            w.writerow(["gammaL", "gammaW", "mu", "lambda", "mesh", "zone", "cell_over_ell", "unknowns",
                         "finite_P_over_piwR", "small_P_over_piwR", "finite_vs_small_percent", "lj_sphere",
                         "maugis_dugdale", "finite_u_min", "small_u_min", "finite_seconds", "small_seconds", "status"])
             for c in cases:
@@ -202,7 +225,7 @@ def main():
                                   for k, r in (("finite", rf), ("small", rs))
                                   if r["status"] != "completed" or not r.get("inside", False)) or "ok"
                 w.writerow([f"{c['gammaL']:g}", f"{c['gammaW']:.6g}", f"{c['mu']:.4g}", f"{c['lambda']:.4g}",
-                            c["level"], f"{c['zone']:.4g}", f"{c['cell_over_ell']:.3f}", rf.get("unknowns", ""),
+                            c["mesh"], f"{c['zone']:.4g}", f"{c['cell_over_ell']:.3f}", rf.get("unknowns", ""),
                             f"{pf:.5f}", f"{ps:.5f}", f"{100 * (pf / ps - 1):.2f}", f"{lj:.5f}", f"{md:.5f}",
                             f"{rf.get('u_min', float('nan')):.6g}", f"{rs.get('u_min', float('nan')):.6g}",
                             f"{rf['seconds']:.0f}", f"{rs['seconds']:.0f}", status])
@@ -246,9 +269,15 @@ def plot(table, png):
 
 BUILD = "build"
 MUS = [0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0]
-# gammaL = 200 stops at mu = 2: at mu = 5 level 2 has cells of one cohesive
-# length as at gammaL = 50, and level 3 (80k nodes) takes hours
-DEFAULT_GRID = [(50.0, mu) for mu in MUS] + [(200.0, mu) for mu in MUS[:-1]]
+DEFAULT_GRID = [(50.0, mu) for mu in MUS] + [(200.0, mu) for mu in MUS]
+
+
+def cell_size_for(mu):
+    """The finest cells in cohesive lengths: 0.4 resolves the contact edge up to mu = 2 (graded and
+    band meshes agree within 0.1 %); from mu = 5 on the edge moves ring by ring (the contact radius
+    is some 60 cohesive lengths), and P_min still moves 3 % from 0.5 to 0.25 (doc/validation.md)."""
+    return 0.25 if mu >= 5.0 else 0.4
+
 
 if __name__ == "__main__":
     main()
