@@ -260,7 +260,7 @@ def plot(table, png):
     ax.set_xscale("log")
     ax.set_xlabel("Tabor parameter μ")
     ax.set_ylabel("pull-off force  |P_min| / (π w R)")
-    ax.legend(fontsize=7.5, loc="upper right")
+    ax.legend(fontsize=7.5, loc="lower left", bbox_to_anchor=(0.0, 0.09))
     ax.grid(True, which="both", lw=0.3, alpha=0.5)
     fig.tight_layout()
     fig.savefig(png, dpi=130)
