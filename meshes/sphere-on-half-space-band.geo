@@ -1,7 +1,7 @@
 // The paper's benchmark (a sphere of radius R above a half-space block, in the
 // meridian half-plane: x = radius, y = axis) as a free quadrilateral mesh
 // whose finest cells, of size lc, lie only in a band under the two
-// interacting surfaces within the radius zone of the axis. Away from the band
+// interacting surfaces within the radius zone R of the axis. Away from the band
 // the cells grow by about `growth` of the distance, to lcFar. For contacts
 // whose cohesive zone is much smaller than the contact (large Tabor mu) this
 // resolves the contact edge with far fewer cells than the graded block of
@@ -14,21 +14,22 @@ DefineConstant[
   gap = {0.02 / 15^(1/6), Name "Parameters/Gap at the apex (r_S0 at gammaL = 50)"},
   W = {8.0, Name "Parameters/Half-space width"},
   H = {8.0, Name "Parameters/Half-space depth"},
-  zone = {0.5, Name "Parameters/Radius of the fine band around the axis (in R0, < R)"},
+  zone = {0.5, Name "Parameters/Radius of the fine band around the axis (in R0, < 1)"},
   lc = {0.01, Name "Parameters/Cell size in the band"},
   band = {4, Name "Parameters/Band depth in cells of size lc"},
   growth = {0.2, Name "Parameters/Growth of the cell size per unit distance from the band"},
   lcFar = {0.5, Name "Parameters/Largest cell size"}
 ];
 
-If (!(zone > 0 && zone < R && lc > 0 && lc < zone && band >= 0 && growth > 0 && lcFar >= lc))
-  Error("sphere-on-half-space-band.geo: need 0 < lc < zone < R, band >= 0, growth > 0 and lcFar >= lc");
+If (!(R > 0 && gap > 0 && H > 0 && zone > 0 && zone < 1 && zone * R < W && lc > 0 && lc < zone * R &&
+      band >= 0 && growth > 0 && lcFar >= lc))
+  Error("sphere-on-half-space-band.geo: need R, gap, H > 0, 0 < zone < 1, zone R < W, 0 < lc < zone R, band >= 0, growth > 0 and lcFar >= lc");
   Abort;
 EndIf
 
 // Lower quarter disc (the upper half carries no load and is left out); its arc
-// is cut where the band ends, at the polar angle whose radius is zone.
-theta = Asin(zone / R);
+// is cut where the band ends, at the polar angle whose radius is zone R.
+theta = Asin(zone);
 Point(1) = {0, gap + R, 0};                                    // centre
 Point(2) = {0, gap, 0};                                        // apex
 Point(3) = {R * Sin(theta), gap + R - R * Cos(theta), 0};     // end of the band
@@ -40,7 +41,7 @@ Line(4) = {4, 1};                                              // equator, drive
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 
-// Half-space block [0, W] x [-H, 0], its top cut at x = zone.
+// Half-space block [0, W] x [-H, 0], its top cut at x = zone R.
 Point(11) = {0, 0, 0};
 Point(12) = {zone * R, 0, 0};
 Point(13) = {W, 0, 0};

@@ -31,6 +31,7 @@ import concurrent.futures
 import csv
 import math
 import os
+import shutil
 import subprocess
 import time
 
@@ -80,8 +81,13 @@ def plan(gl, mu, max_level, mesh="auto", cell_size=0.4):
     ell = m["f_E"] * rs0 ** 2 / m["w"]  # E* = f_E Y of the two bodies together
     cell_max = min(cell_size * ell, r0)
     # the fine cells reach where the gap is 4 r0: at the DMT end the force is gathered out there
-    # (zone 0.05 instead of 0.2 at gammaL = 200, mu = 0.05: P_min 2.4 % weaker; 0.4: 0.0005 % stronger)
-    zone = min(0.85, max(1.3 * a0, math.sqrt(8.0 * r0)))
+    # (zone 0.05 instead of 0.2 at gammaL = 200, mu = 0.05: P_min 2.4 % weaker; 0.4: 0.0005 % stronger);
+    # at most 0.85 R, the largest Contact Zone Size (the band mesh needs less than R)
+    wanted = max(1.3 * a0, math.sqrt(8.0 * r0))
+    zone = min(0.85, wanted)
+    warnings = []
+    if wanted > zone:
+        warnings.append(f"the fine zone is cut to 0.85 R from the {wanted:.3g} R the contact needs")
     level = max(0, math.ceil(math.log2(zone / 20 / cell_max)))
     step = (u_in - u_end) / 60
     if mesh == "band" or (mesh == "auto" and level > max_level):
@@ -92,6 +98,9 @@ def plan(gl, mu, max_level, mesh="auto", cell_size=0.4):
                     f"Geometry/Mesh Numbers/gap={rs0:.6g}"]
         label, cell = f"band {cell_max:.3g}", cell_max
     else:
+        if level > max_level:
+            warnings.append(f"level {max_level} (--max-level) instead of the {level} that cells of "
+                            f"{cell_size:g} cohesive lengths need")
         level = min(level, max_level)
         geometry = [f"Geometry/Mesh Refinement={level}", f"Geometry/Contact Zone Size={zone:.4g}"]
         label, cell = f"level {level}", zone / 20 / 2 ** level
@@ -102,7 +111,8 @@ def plan(gl, mu, max_level, mesh="auto", cell_size=0.4):
         f"Loading/Min Increment={step * 1e-5:.6g}", "Output/Print Steps=false", "Output/Exodus=false",
         "Output/Checkpoint=false"]
     return {"gammaL": gl, "gammaW": gw, "mu": m["mu_tabor"], "lambda": lam, "w": m["w"], "mesh": label,
-            "zone": zone, "cells_across": zone / cell, "cell_over_ell": cell / ell, "overrides": overrides}
+            "zone": zone, "cells_across": zone / cell, "cell_over_ell": cell / ell, "overrides": overrides,
+            "warnings": warnings}
 
 
 def minimum_force(csv_path):
@@ -143,6 +153,7 @@ def run_case(case, kinematics, out, rerun):
         if text.startswith(command + "\n") and "\nexit " in text:
             cached = text
     if cached is None:
+        shutil.rmtree(folder, ignore_errors=True)  # a failed run must not leave an older run's curve behind
         t0 = time.time()
         proc = subprocess.run(args, capture_output=True, text=True)
         cached = f"{command}\n{proc.stdout}{proc.stderr}\nexit {proc.returncode} after {time.time() - t0:.1f} s\n"
@@ -172,13 +183,14 @@ def main():
     ap.add_argument("--mu", type=float, nargs="+")
     ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
     ap.add_argument("--max-level", type=int, default=2,
-                    help="the finest level of the graded mesh; cases needing a finer one use the band mesh")
+                    help="the finest level of the graded mesh (0 .. 6); with --mesh auto, cases needing a "
+                         "finer one use the band mesh")
     ap.add_argument("--mesh", choices=("auto", "graded", "band"), default="auto",
                     help="graded: the built-in mesh at most at --max-level; band: "
                          "meshes/sphere-on-half-space-band.geo; auto: graded unless it needs more than --max-level")
     ap.add_argument("--cell-size", type=float,
                     help="the finest cells in cohesive lengths E* r_S0^2 / w (and at most r0); "
-                         "default 0.4, and 0.25 at mu >= 5 (CELL_SIZE)")
+                         "default 0.4, and 0.25 above mu = 2 (cell_size_for)")
     ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
     ap.add_argument("--plan", action="store_true", help="print the cases and their meshes, run nothing")
     ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
@@ -193,11 +205,17 @@ def main():
             grid = [(gl, mu) for gl in args.gammaL or [50.0, 200.0] for mu in args.mu or MUS]
         if args.cell_size is not None and not args.cell_size > 0.0:
             ap.error(f"--cell-size must be > 0 (cohesive lengths), not {args.cell_size}")
+        if not 0 <= args.max_level <= 6:
+            ap.error(f"--max-level must be 0 .. 6 (Geometry/Mesh Refinement), not {args.max_level}")
+        if args.jobs < 1:
+            ap.error(f"--jobs must be at least 1, not {args.jobs}")
         cases = [plan(gl, mu, args.max_level, args.mesh, args.cell_size or cell_size_for(mu)) for gl, mu in grid]
         for c in cases:
             print(f"gammaL {c['gammaL']:g}, mu {c['mu']:.3g}: gammaW {c['gammaW']:.4g}, lambda {c['lambda']:.3g}, "
                   f"{c['mesh']}, zone {c['zone']:.3g} (cells {c['cell_over_ell']:.2f} of the cohesive length), "
                   f"path {next(o for o in c['overrides'] if o.startswith('Loading/Approach Path=')).split('=')[1]}", flush=True)
+            for w in c["warnings"]:
+                print(f"  warning: {w}", flush=True)
         if args.plan:
             return
         # the cheap (coarse) cases first
@@ -274,9 +292,10 @@ DEFAULT_GRID = [(50.0, mu) for mu in MUS] + [(200.0, mu) for mu in MUS]
 
 def cell_size_for(mu):
     """The finest cells in cohesive lengths: 0.4 resolves the contact edge up to mu = 2 (graded and
-    band meshes agree within 0.1 %); from mu = 5 on the edge moves ring by ring (the contact radius
-    is some 60 cohesive lengths), and P_min still moves 3 % from 0.5 to 0.25 (doc/validation.md)."""
-    return 0.25 if mu >= 5.0 else 0.4
+    band meshes agree within 0.1 % at finite strain); at mu = 5 the edge moves ring by ring (the
+    contact radius reaches some 48 cohesive lengths), and P_min still moves 3 % from 0.5 to 0.25
+    (doc/validation.md). Between 2 and 5, untested, the finer of the two."""
+    return 0.25 if mu > 2.0 else 0.4
 
 
 if __name__ == "__main__":
