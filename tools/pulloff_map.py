@@ -10,8 +10,8 @@ strain, Derjaguin; cgcm-analytic ljsphere) and Maugis-Dugdale (lambda =
 Each case is planned from the Maugis-Dugdale curve at the theoretical
 lambda (cgcm-analytic map, curve, pulloff): the approach ends at the zero-load
 contact, the retraction halfway between the load- and the
-displacement-control pull-off; the finest cells are at most 0.4 (0.25 from
-mu = 5 on) of the cohesive length E* r_S0^2 / w and at most r0, over 1.3
+displacement-control pull-off; the finest cells are at most 0.4 (0.25 above
+mu = 2) of the cohesive length E* r_S0^2 / w and at most r0, over 1.3
 zero-load contact radii and at least to where the gap is 4 r0 (R = 1). The
 mesh is the built-in graded one (cells Contact Zone Size / 20 / 2^level) up to
 --max-level, beyond it meshes/sphere-on-half-space-band.geo, whose fine cells
@@ -104,15 +104,15 @@ def plan(gl, mu, max_level, mesh="auto", cell_size=0.4):
         level = min(level, max_level)
         geometry = [f"Geometry/Mesh Refinement={level}", f"Geometry/Contact Zone Size={zone:.4g}"]
         label, cell = f"level {level}", zone / 20 / 2 ** level
+    path = f"{{{u_start:.6g},{u_in:.6g},{u_end:.6g}}}"
     overrides = [
-        f"Interaction/gammaL={gl:.12g}", f"Interaction/gammaW={gw:.12g}", *geometry,
-        f"Loading/Approach Path={{{u_start:.6g},{u_in:.6g},{u_end:.6g}}}",
+        f"Interaction/gammaL={gl:.12g}", f"Interaction/gammaW={gw:.12g}", *geometry, f"Loading/Approach Path={path}",
         f"Loading/Initial Increment={step:.6g}", f"Loading/Max Increment={step:.6g}",
         f"Loading/Min Increment={step * 1e-5:.6g}", "Output/Print Steps=false", "Output/Exodus=false",
         "Output/Checkpoint=false"]
     return {"gammaL": gl, "gammaW": gw, "mu": m["mu_tabor"], "lambda": lam, "w": m["w"], "mesh": label,
-            "zone": zone, "cells_across": zone / cell, "cell_over_ell": cell / ell, "overrides": overrides,
-            "warnings": warnings}
+            "zone": zone, "cells_across": zone / cell, "cell_over_ell": cell / ell, "path": path,
+            "overrides": overrides, "warnings": warnings}
 
 
 def minimum_force(csv_path):
@@ -213,7 +213,7 @@ def main():
         for c in cases:
             print(f"gammaL {c['gammaL']:g}, mu {c['mu']:.3g}: gammaW {c['gammaW']:.4g}, lambda {c['lambda']:.3g}, "
                   f"{c['mesh']}, zone {c['zone']:.3g} (cells {c['cell_over_ell']:.2f} of the cohesive length), "
-                  f"path {next(o for o in c['overrides'] if o.startswith('Loading/Approach Path=')).split('=')[1]}", flush=True)
+                  f"path {c['path']}", flush=True)
             for w in c["warnings"]:
                 print(f"  warning: {w}", flush=True)
         if args.plan:
