@@ -46,25 +46,25 @@ int main(int argc, char** argv) {
   }
 
   auto mesh = std::make_shared<mesh::Mesh>();
-  assembly::Formulation form;
+  Formulation form;
   std::vector<std::pair<std::string, int>> fixed;
   std::string loaded;
   if (threeD) {
     mesh::BoxSpec s;
     s.nx = nx, s.ny = ny, s.nz = nz;
     *mesh = mesh::box(s);
-    form = assembly::Formulation::ThreeD;
+    form = Formulation::ThreeD;
     fixed = {{"xmin", 0}, {"ymin", 1}, {"zmin", 2}, {"zmax", 0}, {"zmax", 1}};
     loaded = "zmax";
   } else {
     mesh::RectangleSpec s;
     s.nx = nx, s.ny = ny;
     *mesh = mesh::rectangle(s);
-    form = assembly::Formulation::Axisymmetric;
+    form = Formulation::Axisymmetric;
     fixed = {{"left", 0}, {"bottom", 1}, {"top", 0}};
     loaded = "top";
   }
-  const int dim = assembly::formulationDim(form);
+  const int dim = formulationDim(form);
   auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *mesh, dim));
   assembly::Problem problem(dofs, mesh, form, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
   assembly::DirichletConditions bc(dofs);
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
   if (root)
     std::printf("%-13s %7lld cells %9lld dofs  np=%d  residual %8.4f s  jacobian %8.4f s (%6.2f us/cell/rank)  "
                 "bc %7.4f s  solve[%s, %s] %8.3f s (%d iterations)  |J du - f|/|f| = %.1e\n",
-                assembly::formulationName(form), cells, (long long)dofs->ownedMap()->getGlobalNumElements(),
+                formulationName(form), cells, (long long)dofs->ownedMap()->getGlobalNumElements(),
                 comm->getSize(), tRes, tJac, 1e6 * tJac * comm->getSize() / cells, tBc, solverType.c_str(),
                 nullSpace.c_str(), tSolve, krylovIterations, rel);
   return 0;

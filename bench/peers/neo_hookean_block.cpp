@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   auto mesh = std::make_shared<mesh::Mesh>(mesh::box(spec));
   const int dim = 3;
   auto dofs = Teuchos::rcp(new assembly::DofMap(comm, *mesh, dim));
-  assembly::Problem problem(dofs, mesh, assembly::Formulation::ThreeD,
+  assembly::Problem problem(dofs, mesh, Formulation::ThreeD,
                             material::NeoHookean::fromYoungPoisson(1.0, 0.3));
   assembly::DirichletConditions bc(dofs);
   for (int c = 0; c < dim; ++c) bc.add(mesh->nodeSet("zmin"), c, 0.0, 0.0);

@@ -88,15 +88,15 @@ void broadcastBytes(const Teuchos::Comm<int>& comm, std::vector<char>& bytes) {
     Teuchos::broadcast(comm, 0, int(std::min(kPiece, size - at)), bytes.data() + at);
 }
 
-void put(core::ByteWriter& out, const DisplacementCondition& c) {
+void put(core::ByteWriter& out, const mesh::DisplacementCondition& c) {
   out.put(c.nodeSet);
   out.put(c.component);
   out.put(c.offset);
   out.put(c.scale);
 }
 
-DisplacementCondition getCondition(core::ByteReader& in) {
-  DisplacementCondition c;
+mesh::DisplacementCondition getCondition(core::ByteReader& in) {
+  mesh::DisplacementCondition c;
   c.nodeSet = in.getString();
   c.component = in.get<int>();
   c.offset = in.get<Real>();
@@ -104,18 +104,18 @@ DisplacementCondition getCondition(core::ByteReader& in) {
   return c;
 }
 
-void put(core::ByteWriter& out, const std::vector<DisplacementCondition>& conditions) {
+void put(core::ByteWriter& out, const std::vector<mesh::DisplacementCondition>& conditions) {
   out.put(std::uint64_t(conditions.size()));
   for (const auto& c : conditions) put(out, c);
 }
 
-std::vector<DisplacementCondition> getConditions(core::ByteReader& in) {
-  std::vector<DisplacementCondition> conditions(in.getCount(1));
+std::vector<mesh::DisplacementCondition> getConditions(core::ByteReader& in) {
+  std::vector<mesh::DisplacementCondition> conditions(in.getCount(1));
   for (auto& c : conditions) c = getCondition(in);
   return conditions;
 }
 
-void put(core::ByteWriter& out, const ForceResponse& f) {
+void put(core::ByteWriter& out, const mesh::ForceResponse& f) {
   out.put(f.nodeSet);
   out.put(f.component);
   out.put(f.sign);
@@ -123,8 +123,8 @@ void put(core::ByteWriter& out, const ForceResponse& f) {
   out.put(f.direction);
 }
 
-ForceResponse getForceResponse(core::ByteReader& in) {
-  ForceResponse f;
+mesh::ForceResponse getForceResponse(core::ByteReader& in) {
+  mesh::ForceResponse f;
   f.nodeSet = in.getString();
   f.component = in.get<int>();
   f.sign = in.get<Real>();
@@ -133,85 +133,57 @@ ForceResponse getForceResponse(core::ByteReader& in) {
   return f;
 }
 
-// Every field of a set-up but its mesh. The potential travels as its name and
-// scales (interaction::makePotential makes it again).
+// What rank 0's model and mesh add to the deck's set-up, without the mesh: the
+// other ranks make the rest from the deck themselves (setupFromDeck).
 std::vector<char> toBytes(const ProblemSetup& s) {
+  const mesh::Model& m = s.model;
   core::ByteWriter out;
-  out.put(s.formulation);
-  out.put(s.material);
-  out.put(s.bodyMaterials);
-  put(out, s.conditions);
-  put(out, s.load);
-  put(out, s.initialMotion);
-  out.put(char(s.balance.has_value()));
-  if (s.balance) put(out, *s.balance);
-  out.put(char(s.interaction.has_value()));
-  if (const auto& in = s.interaction) {
-    out.put(in->potential->name());
-    out.put(in->potential->epsilon());
-    out.put(in->potential->r0());
-    out.put(in->densities);
-    out.put(in->options);
-    out.put(in->volumeMethod);
-    out.put(in->volumeOptions);
-    out.put(in->searchRadiusFactor);
-    out.put(in->gammaL);
-    out.put(in->gammaW);
-  }
-  out.put(char(s.contact.has_value()));
-  if (const auto& c = s.contact) {
+  put(out, m.conditions);
+  put(out, m.force);
+  put(out, m.initialMotion);
+  out.put(char(m.balance.has_value()));
+  if (m.balance) put(out, *m.balance);
+  out.put(char(m.contact.has_value()));
+  if (const auto& c = m.contact) {
     out.put(c->upperApex);
     out.put(c->lowerApex);
     out.put(c->upperBody);
     out.put(c->lowerBody);
     out.put(c->contactDistance);
   }
+  out.put(m.interacting);
+  out.put(m.referenceArea);
+  out.put(s.bodyMaterials);
   out.put(std::uint64_t(s.report.size()));
   for (const auto& line : s.report) out.put(line);
-  out.put(s.partition);
-  out.put(s.forceScale);
   out.put(s.numNodes);
   out.put(s.numCells);
   return out.take();
 }
 
-ProblemSetup setupFromBytes(const std::vector<char>& bytes) {
+ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vector<char>& bytes) {
   core::ByteReader in(bytes);
-  ProblemSetup s;
-  s.formulation = in.get<assembly::Formulation>();
-  s.material = in.get<material::NeoHookean>();
-  s.bodyMaterials = in.getVector<material::NeoHookean>();
-  s.conditions = getConditions(in);
-  s.load = getForceResponse(in);
-  s.initialMotion = getConditions(in);
-  if (in.get<char>()) s.balance = getForceResponse(in);
+  mesh::Model m;
+  m.conditions = getConditions(in);
+  m.force = getForceResponse(in);
+  m.initialMotion = getConditions(in);
+  if (in.get<char>()) m.balance = getForceResponse(in);
   if (in.get<char>()) {
-    InteractionSetup i;
-    const std::string potential = in.getString();
-    const Real epsilon = in.get<Real>(), r0 = in.get<Real>();
-    i.potential = interaction::makePotential(potential, epsilon, r0);
-    i.densities = in.getVector<Real>();
-    i.options = in.get<interaction::SurfaceInteractionOptions>();
-    i.volumeMethod = in.get<bool>();
-    i.volumeOptions = in.get<interaction::VolumeInteractionOptions>();
-    i.searchRadiusFactor = in.get<Real>();
-    i.gammaL = in.get<Real>();
-    i.gammaW = in.get<Real>();
-    s.interaction = std::move(i);
-  }
-  if (in.get<char>()) {
-    ContactGeometry c;
+    mesh::ContactGeometry c;
     c.upperApex = in.getString();
     c.lowerApex = in.getString();
     c.upperBody = in.get<int>();
     c.lowerBody = in.get<int>();
     c.contactDistance = in.get<Real>();
-    s.contact = std::move(c);
+    m.contact = std::move(c);
   }
-  s.report.resize(in.getCount(sizeof(std::uint64_t)));
+  m.interacting = in.get<bool>();
+  m.referenceArea = in.get<Real>();
+  ProblemSetup s = setupFromDeck(deck);
+  attachModel(s, std::move(m), deck);
+  s.bodyMaterials = in.getVector<material::NeoHookean>();
+  s.report.resize(in.getCount(sizeof(std::uint64_t)));  // rank 0's, the body materials' lines included
   for (auto& line : s.report) line = in.getString();
-  s.partition = in.get<assembly::CellPartition>();
-  s.forceScale = in.get<Real>();
   s.numNodes = in.get<std::size_t>();
   s.numCells = in.get<std::size_t>();
   if (!in.atEnd()) throw std::logic_error("setupFromBytes: bytes left over");
@@ -230,24 +202,25 @@ ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::Paramet
   });
   broadcastBytes(comm, bytes);
   decodeOnEveryRank(comm, [&] {
-    if (comm.getRank() != 0) setup = setupFromBytes(bytes);
+    if (comm.getRank() != 0) setup = setupFromBytes(deck, bytes);
   });
   return setup;
 }
 
 Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup) {
-  const int dim = assembly::formulationDim(setup.formulation);
+  const int dim = formulationDim(setup.formulation);
   const int rank = comm->getRank(), p = comm->getSize();
-  if (rank == 0 && !setup.mesh) throw std::logic_error("distribute: rank 0 needs the whole mesh");
-  if (p == 1) return {setup.mesh, Teuchos::rcp(new assembly::DofMap(comm, *setup.mesh, dim, setup.partition))};
+  if (rank == 0 && !setup.model.mesh) throw std::logic_error("distribute: rank 0 needs the whole mesh");
+  if (p == 1)
+    return {setup.model.mesh, Teuchos::rcp(new assembly::DofMap(comm, *setup.model.mesh, dim, setup.partition))};
   std::shared_ptr<const mesh::Mesh> mine;
-  if (setup.interaction && setup.interaction->volumeMethod) {
+  if (setup.interaction && setup.interaction->method == interaction::Method::VolumePair) {
     // Method 1 pairs cells of the whole bodies: every rank holds the whole mesh.
     std::vector<char> bytes;
-    runOnRoot(*comm, [&] { bytes = mesh::toBytes(*setup.mesh); });
+    runOnRoot(*comm, [&] { bytes = mesh::toBytes(*setup.model.mesh); });
     broadcastBytes(*comm, bytes);
     decodeOnEveryRank(*comm, [&] {
-      mine = rank == 0 ? setup.mesh : std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
+      mine = rank == 0 ? setup.model.mesh : std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
     });
     return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, setup.partition))};
   }
@@ -256,21 +229,23 @@ Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   std::vector<int> owners;
   std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
   runOnRoot(*comm, [&] {
-    owners = assembly::partitionCells(*setup.mesh, setup.partition, p);
-    if (setup.contact)
-      for (const auto& name : {setup.contact->upperApex, setup.contact->lowerApex}) {
-        const auto& nodes = setup.mesh->nodeSet(name);
+    owners = assembly::partitionCells(*setup.model.mesh, setup.partition, p);
+    if (setup.model.contact)
+      for (const auto& name : {setup.model.contact->upperApex, setup.model.contact->lowerApex}) {
+        const auto& nodes = setup.model.mesh->nodeSet(name);
         probed.insert(probed.end(), nodes.begin(), nodes.end());
       }
   });
   std::vector<char> bytes;
   for (int r = 1; r < p; ++r) {
-    runOnRoot(*comm, [&] { bytes = mesh::toBytes(mesh::localPart(*setup.mesh, owners, r, probed)); });
+    runOnRoot(*comm, [&] { bytes = mesh::toBytes(mesh::localPart(*setup.model.mesh, owners, r, probed)); });
     if (rank == 0) sendBytes(*comm, r, bytes);
     if (rank == r) bytes = receiveBytes(*comm, 0);
   }
   if (rank == 0) std::vector<char>().swap(bytes);
-  runOnRoot(*comm, [&] { mine = std::make_shared<const mesh::Mesh>(mesh::localPart(*setup.mesh, owners, 0, probed)); });
+  runOnRoot(*comm, [&] {
+    mine = std::make_shared<const mesh::Mesh>(mesh::localPart(*setup.model.mesh, owners, 0, probed));
+  });
   decodeOnEveryRank(*comm, [&] {
     if (rank != 0) mine = std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
   });

@@ -11,6 +11,13 @@ struct Distribution {
   Teuchos::RCP<assembly::DofMap> dofs;
 };
 
+/// What the deck alone gives (every rank builds it): formulation, material, partition and, unless the
+/// geometry is a block, the interaction.
+ProblemSetup setupFromDeck(const Teuchos::ParameterList& deck);
+/// Joins a model to the deck's set-up: the force scale, the interaction (dropped when the bodies do not
+/// interact) with its report lines, the model's.
+void attachModel(ProblemSetup& setup, mesh::Model model, const Teuchos::ParameterList& deck);
+
 /// One rank: the set-up's mesh. Several: rank 0 partitions its mesh (Solver/Partition) and sends each
 /// rank its part (mesh::localPart, with the contact probe's apex nodes); Method 1: the whole mesh to
 /// every rank. Collective.

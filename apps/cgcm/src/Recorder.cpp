@@ -11,7 +11,7 @@ namespace cgcm::app {
 
 using assembly::Vector;
 
-ContactProbe::ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
+ContactProbe::ContactProbe(const mesh::ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
     : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)),
       upperNodes_(m.surfaces[c.upperBody].facets), lowerSurface_(mesh::triangulated(m.surfaces[c.lowerBody])) {
   std::sort(upperNodes_.begin(), upperNodes_.end());
@@ -61,7 +61,7 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
   if (parameterIndex_ > 0) columns_.push_back(model_.parameterNames()[parameterIndex_]);
   columns_.push_back("P");
   if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius"});
-  if (setup_.balance) columns_.push_back("P_lower");
+  if (setup_.model.balance) columns_.push_back("P_lower");
   columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
   // a new file, or (restart) the file kept up to the checkpoint's last row
   auto open = [&](const std::string& path, const std::vector<std::string>& columns) {
@@ -75,13 +75,13 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
       bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
   if (exodus)
-    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", setup.mesh.get(), disc, columns_,
+    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", setup.model.mesh.get(), disc, columns_,
                                                resume ? resume->exodusSteps : -1);
 }
 
 void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
   model_.evaluateUnconstrained(x, p, f_);
-  auto resultant = [&](const ForceResponse& r) {  // collective
+  auto resultant = [&](const mesh::ForceResponse& r) {  // collective
     const auto& nodes = mesh_.nodeSet(r.nodeSet);
     if (r.direction.empty()) return r.sign * r.scale * model_.problem().sumOverNodes(f_, nodes, r.component);
     Real sum = 0.0;
@@ -91,18 +91,18 @@ void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row
   };
   row.u = p[0];
   row.parameter = p[std::size_t(std::max(parameterIndex_, 0))];
-  row.P = resultant(setup_.load);
+  row.P = resultant(setup_.model.force);
   if (probe_) {
     row.gap = probe_->gap(x);
     row.contactRadius = probe_->contactRadius(x);
   }
-  if (setup_.balance) row.Plower = resultant(*setup_.balance);
+  if (setup_.model.balance) row.Plower = resultant(*setup_.model.balance);
   curve.push_back(row);
   std::vector<double> values{double(row.step), row.u};
   if (parameterIndex_ > 0) values.push_back(row.parameter);
   values.push_back(row.P);
   if (probe_) values.insert(values.end(), {row.gap, row.contactRadius});
-  if (setup_.balance) values.push_back(row.Plower);
+  if (setup_.model.balance) values.push_back(row.Plower);
   values.insert(values.end(), {double(row.newtonIterations), row.stable ? 1.0 : 0.0, row.fold ? 1.0 : 0.0,
                                row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
   if (results_) results_->write(x, values);

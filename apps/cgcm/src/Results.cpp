@@ -20,13 +20,13 @@ struct Component {
   const char* name;
   int i, j;
 };
-std::vector<Component> stressComponents(assembly::Formulation f) {
+std::vector<Component> stressComponents(Formulation f) {
   switch (f) {
-    case assembly::Formulation::Axisymmetric:
+    case Formulation::Axisymmetric:
       return {{"stress_rr", 0, 0}, {"stress_zz", 1, 1}, {"stress_tt", 2, 2}, {"stress_rz", 0, 1}};
-    case assembly::Formulation::PlaneStrain:
+    case Formulation::PlaneStrain:
       return {{"stress_xx", 0, 0}, {"stress_yy", 1, 1}, {"stress_zz", 2, 2}, {"stress_xy", 0, 1}};
-    case assembly::Formulation::ThreeD:
+    case Formulation::ThreeD:
       break;
   }
   return {{"stress_xx", 0, 0}, {"stress_yy", 1, 1}, {"stress_zz", 2, 2},
@@ -65,7 +65,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, co
   io::ExodusVariables vars;
   const int dim = disc.dofs->dofsPerNode();
   for (int i = 0; i < dim; ++i) vars.nodal.push_back(kDisplacement[i]);
-  if (disc.interaction) {
+  if (disc.problem->interaction()) {  // Method 3: the traction of its pairs
     vars.nodal.insert(vars.nodal.end(), {"traction_x", "traction_y"});
     if (dim == 3) vars.nodal.push_back("traction_z");
     vars.nodal.push_back("pressure");
@@ -81,13 +81,13 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, co
 }
 
 void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
-  const std::vector<Real> forceByNode = disc_.interaction ? interactionNodeForces(x) : std::vector<Real>{};
+  const std::vector<Real> forceByNode = disc_.problem->interaction() ? interactionNodeForces(x) : std::vector<Real>{};
   const std::vector<Real> uByNode = gather_.gather(x);  // by dof id = global node id * dim + i
   if (!root_) return;
   const std::vector<Real> u = inMeshOrder(uByNode), force = inMeshOrder(forceByNode);
   io::ExodusWriter::Fields nodal, element;
   displacementAndStress(u, nodal, element);
-  if (disc_.interaction) traction(u, force, nodal);
+  if (disc_.problem->interaction()) traction(u, force, nodal);
   io::ExodusWriter::Scalars scalars;
   for (std::size_t k = 0; k < globals_.size(); ++k) scalars[globals_[k]] = globals[k];
   writer_->writeStep(writer_->numSteps() + 1, nodal, element, scalars);
@@ -127,9 +127,9 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
       Real J = 0.0;
       bool ok = false;
       switch (disc_.problem->formulation()) {
-        case assembly::Formulation::PlaneStrain: ok = cellStress<PlaneStrainQuad4>(mesh, nodes, u, material, s, J); break;
-        case assembly::Formulation::Axisymmetric: ok = cellStress<AxisymmetricQuad4>(mesh, nodes, u, material, s, J); break;
-        case assembly::Formulation::ThreeD:
+        case Formulation::PlaneStrain: ok = cellStress<PlaneStrainQuad4>(mesh, nodes, u, material, s, J); break;
+        case Formulation::Axisymmetric: ok = cellStress<AxisymmetricQuad4>(mesh, nodes, u, material, s, J); break;
+        case Formulation::ThreeD:
           ok = b.type == mesh::CellType::Hex8 ? cellStress<ThreeDHex8>(mesh, nodes, u, material, s, J)
                                               : cellStress<ThreeDTet4>(mesh, nodes, u, material, s, J);
           break;
@@ -144,7 +144,7 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
 
 std::vector<Real> ResultsWriter::interactionNodeForces(const assembly::Vector& x) const {
   // Each rank holds the pairs of its own facets, from the last evaluation, at this state.
-  const auto& in = *disc_.interaction;
+  const auto& in = *disc_.problem->interaction();
   const int d = in.dim();
   const std::vector<Real>& coords = disc_.problem->currentCoordinates(x);  // every surface node
   const auto& dofs = *disc_.dofs;
@@ -164,7 +164,7 @@ std::vector<Real> ResultsWriter::interactionNodeForces(const assembly::Vector& x
 void ResultsWriter::traction(const std::vector<Real>& u, const std::vector<Real>& force,
                              io::ExodusWriter::Fields& nodal) const {
   const auto& mesh = *mesh_;
-  const auto& in = *disc_.interaction;
+  const auto& in = *disc_.problem->interaction();
   const int d = in.dim();
   const LocalIndex nn = mesh.numNodes();
   // the interaction's surfaces name the nodes of the mesh this rank assembles; the fields are on mesh_
@@ -173,7 +173,7 @@ void ResultsWriter::traction(const std::vector<Real>& u, const std::vector<Real>
   std::vector<Real> x(mesh.coords);
   for (std::size_t k = 0; k < x.size(); ++k) x[k] += u[k];
   std::vector<Real> area(nn, 0.0), normal(d * std::size_t(nn), 0.0);
-  const bool axisymmetric = disc_.problem->formulation() == assembly::Formulation::Axisymmetric;
+  const bool axisymmetric = disc_.problem->formulation() == Formulation::Axisymmetric;
   for (int b = 0; b < in.numBodies(); ++b) {
     const auto& s = in.surface(b);
     const int npf = s.nodesPerFacet;

@@ -106,7 +106,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
                                                                deck.sublist("Solver").sublist("Linear Solver"));
   newtonSettings.forceScale = setup.forceScale;
-  const int dim = assembly::formulationDim(setup.formulation);
+  const int dim = formulationDim(setup.formulation);
   const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
   // rejects bad settings now
   solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim, Teuchos::null, !setup.interaction.has_value());
@@ -159,11 +159,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   solver::NewtonSolver newton(model, newtonSettings);
   solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
   std::unique_ptr<ContactProbe> probe;
-  if (setup.contact) probe = std::make_unique<ContactProbe>(*setup.contact, *disc.mesh, *problem);
+  if (setup.model.contact) probe = std::make_unique<ContactProbe>(*setup.model.contact, *disc.mesh, *problem);
   const int parameterIndex = model->parameterIndex(plan.parameter);
 
   if (root && printSteps) {
-    log << "cgcm: " << assembly::formulationName(setup.formulation) << ", " << numNodes << " nodes, " << numCells
+    log << "cgcm: " << formulationName(setup.formulation) << ", " << numNodes << " nodes, " << numCells
         << " cells, " << disc.dofs->ownedMap()->getGlobalNumElements() << " dofs, "
         << comm->getSize() << " rank(s); " << (plan.arcLength ? "arc-length" : "displacement") << " control\n";
     for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
@@ -198,9 +198,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   if (resume) {
     gather.scatter(resume->u, u);
     if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
-  } else if (!setup.initialMotion.empty()) {
+  } else if (!setup.model.initialMotion.empty()) {
     assembly::DirichletConditions motion(disc.dofs);
-    for (const auto& c : setup.initialMotion)
+    for (const auto& c : setup.model.initialMotion)
       motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
     motion.impose(plan.path.path.front(), u);
   }

@@ -41,24 +41,24 @@ std::string megabytes(double mb) {
 
 }  // namespace
 
-SizeEstimate estimateSize(double nodes, double cells, assembly::Formulation formulation) {
+SizeEstimate estimateSize(double nodes, double cells, Formulation formulation) {
   SizeEstimate e;
   e.nodes = nodes;
   e.cells = cells;
-  e.dofs = nodes * assembly::formulationDim(formulation);
-  const MemoryLaw& law = formulation == assembly::Formulation::ThreeD ? k3D : k2D;
+  e.dofs = nodes * formulationDim(formulation);
+  const MemoryLaw& law = formulation == Formulation::ThreeD ? k3D : k2D;
   e.megabytes = kBaseMegabytes + law.megabytesAtReference * std::pow(e.dofs / law.referenceDofs, law.exponent);
   return e;
 }
 
-std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& deck, assembly::Formulation formulation) {
+std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& deck, Formulation formulation) {
   const auto& g = deck.sublist("Geometry");
   const std::string type = g.get<std::string>("Type");
   if (type == "gmsh") return std::nullopt;
   if (type == "block") {
     const auto& b = g.sublist("Block");
     const double nx = b.get<int>("Cells X"), ny = b.get<int>("Cells Y");
-    if (formulation == assembly::Formulation::ThreeD) {
+    if (formulation == Formulation::ThreeD) {
       const double nz = b.get<int>("Cells Z");
       const double cells = nx * ny * nz * (b.get<std::string>("Element") == "tet4" ? 6.0 : 1.0);
       return estimateSize((nx + 1) * (ny + 1) * (nz + 1), cells, formulation);

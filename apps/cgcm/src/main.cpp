@@ -57,7 +57,7 @@ Outcome runDeck(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const std::v
     cgcm::io::validateDeck(*deck, *cgcm::app::validParameters());
     const auto result = cgcm::app::runSimulation(comm, *deck, out, mode);
     if (mode == cgcm::app::RunMode::Check && root) {
-      const auto formulation = cgcm::app::parseFormulation(deck->sublist("Problem").get<std::string>("Formulation"));
+      const auto formulation = cgcm::parseFormulation(deck->sublist("Problem").get<std::string>("Formulation"));
       const auto size = cgcm::app::estimateSize(double(result.numNodes), double(result.numCells), formulation);
       out << "cgcm: " << args[0] << ": valid; " << result.numNodes << " nodes, " << result.numCells << " cells, "
           << result.numDofs << " unknowns, about " << int(size.megabytes) << " MB\n";

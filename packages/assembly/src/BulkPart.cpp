@@ -9,17 +9,6 @@
 
 namespace cgcm::assembly {
 
-const char* formulationName(Formulation f) {
-  switch (f) {
-    case Formulation::PlaneStrain: return "plane strain";
-    case Formulation::Axisymmetric: return "axisymmetric";
-    case Formulation::ThreeD: return "3D";
-  }
-  return "?";
-}
-
-int formulationDim(Formulation f) { return f == Formulation::ThreeD ? 3 : 2; }
-
 namespace {
 
 using DofView = Kokkos::View<LocalIndex**, Kokkos::LayoutRight>;

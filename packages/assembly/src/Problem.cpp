@@ -212,13 +212,14 @@ std::string Problem::firstNonFinite(const Vector& v) const {
   return {};
 }
 
-void Problem::setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor) {
-  interactionPart_ =
-      std::make_unique<SurfaceInteractionPart>(dofs_, *mesh_, std::move(interaction), searchRadiusFactor);
-}
-
-void Problem::setInteraction(std::shared_ptr<interaction::VolumeInteraction> interaction, Real searchRadiusFactor) {
-  interactionPart_ = std::make_unique<VolumeInteractionPart>(dofs_, *mesh_, std::move(interaction), searchRadiusFactor);
+void Problem::setInteraction(std::shared_ptr<interaction::Interaction> interaction, Real searchRadiusFactor) {
+  // the one place that knows which part assembles which method
+  if (auto surface = std::dynamic_pointer_cast<interaction::SurfaceInteraction>(interaction))
+    interactionPart_ = std::make_unique<SurfaceInteractionPart>(dofs_, *mesh_, std::move(surface), searchRadiusFactor);
+  else if (auto volume = std::dynamic_pointer_cast<interaction::VolumeInteraction>(interaction))
+    interactionPart_ = std::make_unique<VolumeInteractionPart>(dofs_, *mesh_, std::move(volume), searchRadiusFactor);
+  else
+    throw std::logic_error("Problem::setInteraction: no assembly part for this interaction method");
 }
 
 std::vector<std::array<Real, 3>> Problem::interactionForces() const {

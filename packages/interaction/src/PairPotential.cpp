@@ -142,9 +142,9 @@ void LennardJones::halfSpaceWithDerivative(Real r, Real& value, Real& derivative
   derivative = c * (q3 - q9 / 5.0) / r;
 }
 
-std::optional<Real> LennardJones::surfaceEquilibriumDistance() const {
-  return r0() / std::pow(15.0, 1.0 / 6.0);
-}
+std::optional<Real> LennardJones::surfaceEquilibriumDistance() const { return surfaceEquilibriumDistance(r0()); }
+
+Real LennardJones::surfaceEquilibriumDistance(Real r0) { return r0 / std::pow(15.0, 1.0 / 6.0); }
 
 Real LennardJones::workFactor() { return kPi / 8.0 * std::cbrt(15.0); }
 

@@ -346,10 +346,10 @@ void applyOverrides(Teuchos::ParameterList& deck, const Teuchos::ParameterList& 
   }
 }
 
-void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid) {
-  checkNamesAndKinds(deck, valid, "");
-  normaliseNumbers(deck, valid, "");
-  checkTypes(deck, valid, "");
+void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& prefix) {
+  checkNamesAndKinds(deck, valid, prefix);
+  normaliseNumbers(deck, valid, prefix);
+  checkTypes(deck, valid, prefix);
   try {
     deck.validateParametersAndSetDefaults(valid);
   } catch (const std::exception& e) {

@@ -12,7 +12,7 @@
 
 #include "cgcm/assembly/TpetraTypes.hpp"
 #include "cgcm/core/Error.hpp"
-#include "cgcm/solver/ParameterValidators.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
 #include "MumpsSolver.hpp"
 #include "SymmetricElimination.hpp"
 

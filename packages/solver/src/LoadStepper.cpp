@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
-#include "cgcm/solver/ParameterValidators.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
 
 namespace cgcm::solver {
 

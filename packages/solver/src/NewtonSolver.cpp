@@ -19,7 +19,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/solver/Convergence.hpp"
 #include "cgcm/solver/PseudoTransientModel.hpp"
-#include "cgcm/solver/ParameterValidators.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
 
 namespace cgcm::solver {
 

@@ -67,7 +67,7 @@ TEST(Results, UniaxialCompressionFieldsAreTheHomogeneousSolution) {
 
     const io::ExodusReader r(dir + "/results.e");
     const auto setup = app::buildProblem(*d);
-    const auto& mesh = *setup.mesh;
+    const auto& mesh = *setup.model.mesh;
     const int dim = mesh.dim, axis = dim - 1;
     ASSERT_EQ(r.blocks().size(), 1u);
     EXPECT_EQ(r.blocks()[0].name, "block");
@@ -134,7 +134,7 @@ TEST(Results, InteractionTractionPressesWhereTheBodiesTouch) {
   EXPECT_EQ(r.sideSets()[0].name, "contact:sphere");
   EXPECT_EQ(r.nodalNames(),
             (std::vector<std::string>{"displacement_x", "displacement_y", "traction_x", "traction_y", "pressure"}));
-  const auto mesh = app::buildProblem(*d).mesh;
+  const auto mesh = app::buildProblem(*d).model.mesh;
   const int last = r.numSteps();
   const auto p = r.nodal("pressure", last), ty = r.nodal("traction_y", last);
   const LocalIndex apex = mesh->nodeSet("apex").front(), lowerApex = mesh->nodeSet("lower apex").front();
@@ -158,7 +158,7 @@ TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
   auto d = deck({"Problem/Formulation=3D", "Geometry/Type=block", "Geometry/Block/Cells X=2",
                  "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=2", "Output/Directory=" + dir});
   auto setup = app::buildProblem(*d);
-  auto& mesh = *setup.mesh;
+  auto& mesh = *setup.model.mesh;
   mesh.nodeIds.resize(std::size_t(mesh.numNodes()));
   for (LocalIndex n = 0; n < mesh.numNodes(); ++n) mesh.nodeIds[std::size_t(n)] = mesh.numNodes() - 1 - n;
   const auto disc = app::discretize(Tpetra::getDefaultComm(), setup, d->sublist("Solver").sublist("Linear Solver"));

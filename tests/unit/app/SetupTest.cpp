@@ -21,19 +21,19 @@ Teuchos::RCP<Teuchos::ParameterList> deckFrom(const std::string& file, const std
   return d;
 }
 
-void expectSame(const app::DisplacementCondition& a, const app::DisplacementCondition& b) {
+void expectSame(const mesh::DisplacementCondition& a, const mesh::DisplacementCondition& b) {
   EXPECT_EQ(a.nodeSet, b.nodeSet);
   EXPECT_EQ(a.component, b.component);
   EXPECT_EQ(a.offset, b.offset);
   EXPECT_EQ(a.scale, b.scale);
 }
 
-void expectSame(const std::vector<app::DisplacementCondition>& a, const std::vector<app::DisplacementCondition>& b) {
+void expectSame(const std::vector<mesh::DisplacementCondition>& a, const std::vector<mesh::DisplacementCondition>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k) expectSame(a[k], b[k]);
 }
 
-void expectSame(const app::ForceResponse& a, const app::ForceResponse& b) {
+void expectSame(const mesh::ForceResponse& a, const mesh::ForceResponse& b) {
   EXPECT_EQ(a.nodeSet, b.nodeSet);
   EXPECT_EQ(a.component, b.component);
   EXPECT_EQ(a.sign, b.sign);
@@ -54,11 +54,13 @@ void expectSameSetUp(const app::ProblemSetup& sent, const app::ProblemSetup& own
   expectSame(sent.material, own.material);
   ASSERT_EQ(sent.bodyMaterials.size(), own.bodyMaterials.size());
   for (std::size_t b = 0; b < own.bodyMaterials.size(); ++b) expectSame(sent.bodyMaterials[b], own.bodyMaterials[b]);
-  expectSame(sent.conditions, own.conditions);
-  expectSame(sent.load, own.load);
-  expectSame(sent.initialMotion, own.initialMotion);
-  ASSERT_EQ(sent.balance.has_value(), own.balance.has_value());
-  if (own.balance) expectSame(*sent.balance, *own.balance);
+  expectSame(sent.model.conditions, own.model.conditions);
+  expectSame(sent.model.force, own.model.force);
+  expectSame(sent.model.initialMotion, own.model.initialMotion);
+  ASSERT_EQ(sent.model.balance.has_value(), own.model.balance.has_value());
+  if (own.model.balance) expectSame(*sent.model.balance, *own.model.balance);
+  EXPECT_EQ(sent.model.interacting, own.model.interacting);
+  EXPECT_EQ(sent.model.referenceArea, own.model.referenceArea);
   ASSERT_EQ(sent.interaction.has_value(), own.interaction.has_value());
   if (own.interaction) {
     const auto &a = *sent.interaction, &b = *own.interaction;
@@ -69,14 +71,14 @@ void expectSameSetUp(const app::ProblemSetup& sent, const app::ProblemSetup& own
       EXPECT_EQ(a.potential->phi(r * b.potential->r0()), b.potential->phi(r * b.potential->r0()));
       EXPECT_EQ(a.potential->halfSpace(r * b.potential->r0()), b.potential->halfSpace(r * b.potential->r0()));
     }
-    EXPECT_EQ(a.densities, b.densities);
-    EXPECT_EQ(a.options.formulation, b.options.formulation);
-    EXPECT_EQ(a.options.quadraturePoints, b.options.quadraturePoints);
-    EXPECT_EQ(a.options.cutoff, b.options.cutoff);
-    EXPECT_EQ(a.options.cutoffTaper, b.options.cutoffTaper);
-    EXPECT_EQ(a.options.search, b.options.search);
-    EXPECT_EQ(a.options.projectionSmoothing, b.options.projectionSmoothing);
-    EXPECT_EQ(a.volumeMethod, b.volumeMethod);
+    EXPECT_EQ(a.density, b.density);
+    EXPECT_EQ(a.surfaceOptions.formulation, b.surfaceOptions.formulation);
+    EXPECT_EQ(a.surfaceOptions.quadraturePoints, b.surfaceOptions.quadraturePoints);
+    EXPECT_EQ(a.surfaceOptions.cutoff, b.surfaceOptions.cutoff);
+    EXPECT_EQ(a.surfaceOptions.cutoffTaper, b.surfaceOptions.cutoffTaper);
+    EXPECT_EQ(a.surfaceOptions.search, b.surfaceOptions.search);
+    EXPECT_EQ(a.surfaceOptions.projectionSmoothing, b.surfaceOptions.projectionSmoothing);
+    EXPECT_EQ(a.method, b.method);
     EXPECT_EQ(a.volumeOptions.formulation, b.volumeOptions.formulation);
     EXPECT_EQ(a.volumeOptions.quadratureOrder, b.volumeOptions.quadratureOrder);
     EXPECT_EQ(a.volumeOptions.maxQuadratureOrder, b.volumeOptions.maxQuadratureOrder);
@@ -86,19 +88,19 @@ void expectSameSetUp(const app::ProblemSetup& sent, const app::ProblemSetup& own
     EXPECT_EQ(a.gammaL, b.gammaL);
     EXPECT_EQ(a.gammaW, b.gammaW);
   }
-  ASSERT_EQ(sent.contact.has_value(), own.contact.has_value());
-  if (own.contact) {
-    EXPECT_EQ(sent.contact->upperApex, own.contact->upperApex);
-    EXPECT_EQ(sent.contact->lowerApex, own.contact->lowerApex);
-    EXPECT_EQ(sent.contact->upperBody, own.contact->upperBody);
-    EXPECT_EQ(sent.contact->lowerBody, own.contact->lowerBody);
-    EXPECT_EQ(sent.contact->contactDistance, own.contact->contactDistance);
+  ASSERT_EQ(sent.model.contact.has_value(), own.model.contact.has_value());
+  if (const auto& c = own.model.contact) {
+    EXPECT_EQ(sent.model.contact->upperApex, c->upperApex);
+    EXPECT_EQ(sent.model.contact->lowerApex, c->lowerApex);
+    EXPECT_EQ(sent.model.contact->upperBody, c->upperBody);
+    EXPECT_EQ(sent.model.contact->lowerBody, c->lowerBody);
+    EXPECT_EQ(sent.model.contact->contactDistance, c->contactDistance);
   }
   EXPECT_EQ(sent.report, own.report);
   EXPECT_EQ(sent.partition, own.partition);
   EXPECT_EQ(sent.forceScale, own.forceScale);
-  EXPECT_EQ(sent.numNodes, std::size_t(own.mesh->numNodes()));
-  EXPECT_EQ(sent.numCells, std::size_t(own.mesh->numCells()));
+  EXPECT_EQ(sent.numNodes, std::size_t(own.model.mesh->numNodes()));
+  EXPECT_EQ(sent.numCells, std::size_t(own.model.mesh->numCells()));
 }
 
 TEST(Setup, RankZeroBuildsTheProblemAndTheOtherRanksReceiveItWithoutTheMesh) {
@@ -127,10 +129,10 @@ TEST(Setup, RankZeroBuildsTheProblemAndTheOtherRanksReceiveItWithoutTheMesh) {
     const auto sent = app::buildProblem(*comm, *deck);
     const auto own = app::buildProblem(*deck);
     // EXPECT, not ASSERT: a rank leaving the loop alone would leave the others in buildProblem's collectives
-    EXPECT_EQ(sent.mesh != nullptr, comm->getRank() == 0) << "only rank 0 holds the whole mesh";
-    if (sent.mesh) {
-      EXPECT_EQ(sent.mesh->numNodes(), own.mesh->numNodes());
-      EXPECT_EQ(sent.mesh->coords, own.mesh->coords);
+    EXPECT_EQ(sent.model.mesh != nullptr, comm->getRank() == 0) << "only rank 0 holds the whole mesh";
+    if (sent.model.mesh) {
+      EXPECT_EQ(sent.model.mesh->numNodes(), own.model.mesh->numNodes());
+      EXPECT_EQ(sent.model.mesh->coords, own.model.mesh->coords);
     }
     expectSameSetUp(sent, own);
   }
@@ -172,7 +174,7 @@ TEST(Setup, APartRankZeroCannotCutStopsEveryRank) {
   const auto deck = deckFrom(std::string(CGCM_INPUTS) + "/sphere-on-half-space.xml",
                              {"Geometry/Type=block", "Problem/Formulation=plane strain"});
   auto setup = app::buildProblem(*comm, *deck);
-  if (setup.mesh) setup.mesh->coords.insert(setup.mesh->coords.end(), {9.0, 9.0});
+  if (setup.model.mesh) setup.model.mesh->coords.insert(setup.model.mesh->coords.end(), {9.0, 9.0});
   try {
     app::discretize(comm, setup, deck->sublist("Solver").sublist("Linear Solver"));
     ADD_FAILURE() << "a node of no cell was distributed";

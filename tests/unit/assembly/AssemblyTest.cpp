@@ -248,7 +248,7 @@ void expectForcesAreTheInteractionShare(const mesh::Mesh& m, const std::vector<R
 
 std::shared_ptr<interaction::SurfaceInteraction> methodThree(const mesh::Mesh& m) {
   interaction::SurfaceInteractionOptions o;
-  o.formulation = interaction::Formulation::ThreeD;
+  o.formulation = Formulation::ThreeD;
   o.quadraturePoints = 2;
   o.cutoff = 2.0;
   return std::make_shared<interaction::SurfaceInteraction>(m.surfaces, std::vector<Real>{1.0, 1.0},
@@ -296,7 +296,7 @@ TEST(VolumeInteractionPart, CoupledTangentAndBalancedForces) {
   const auto mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
   Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
   interaction::VolumeInteractionOptions o;
-  o.formulation = interaction::Formulation::ThreeD;
+  o.formulation = Formulation::ThreeD;
   o.quadratureOrder = 1;
   o.maxQuadratureOrder = 2;
   o.cutoff = 1.0;

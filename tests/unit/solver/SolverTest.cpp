@@ -134,7 +134,7 @@ TEST(LoadStepping, PatchTestOnDistortedMeshesReproducesHomogeneousDeformation) {
       assembly::Vector u(sys.model->map());
       stepper.run(u, [](const solver::StepInfo&, const assembly::Vector&) {});
 
-      const int dim = sys.setup.mesh->dim;
+      const int dim = sys.setup.model.mesh->dim;
       double lateral = 1.0;
       test::uniaxialCauchyStress(sys.setup.material, 0.75, lateralDirections(form), lateral);
       auto uv = u.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -145,7 +145,7 @@ TEST(LoadStepping, PatchTestOnDistortedMeshesReproducesHomogeneousDeformation) {
         const LocalIndex node = LocalIndex(gid / dim);
         const int i = int(gid % dim);
         const double stretch = (i == dim - 1) ? 0.75 : lateral;
-        const double exact = (stretch - 1.0) * sys.setup.mesh->coord(node, i);
+        const double exact = (stretch - 1.0) * sys.setup.model.mesh->coord(node, i);
         maxError = std::max(maxError, std::abs(uv(lid, 0) - exact));
       }
       double globalError = 0.0;
@@ -330,7 +330,7 @@ TEST(RuntimeFaults, InvertedCellsAndNonFiniteResidualsAreReportedWithWhere) {
   System sys(*d);
   const auto& dofs = sys.dofs;
   const auto& problem = sys.problem;
-  const auto& mesh = *sys.setup.mesh;
+  const auto& mesh = *sys.setup.model.mesh;
   // Node 0's first cell turned inside out: node 0 pushed far through it.
   assembly::Vector u(dofs->ownedMap()), f(dofs->ownedMap());
   const auto lid = dofs->ownedMap()->getLocalElement(GlobalIndex(0));  // node 0, x (global ids)
@@ -372,10 +372,11 @@ TEST(Interaction, UndeformedBenchmarkMeshGivesDerjaguinForceOnBothBodies) {
   io::validateDeck(*d, *app::validParameters());
   const auto s = app::buildProblem(*d);
   const auto& in = *s.interaction;
-  interaction::SurfaceInteraction si(s.mesh->surfaces, in.densities, in.potential, in.options);
-  si.updatePairs(s.mesh->coords);
+  const auto created = in.create(*s.model.mesh);
+  auto& si = dynamic_cast<interaction::SurfaceInteraction&>(*created);
+  si.updatePairs(s.model.mesh->coords);
   std::vector<interaction::PairContribution> out;
-  si.evaluate(s.mesh->coords, out, false);
+  si.evaluate(s.model.mesh->coords, out, false);
   const double twoPiWR = 2 * cgcm::kPi * in.potential->workOfAdhesion(1.0, 1.0);
   const auto& r = si.summary().resultant;
   std::printf("resultants / 2 pi w R: sphere %.6f, half-space %.6f\n", r[0][1] / twoPiWR, r[1][1] / twoPiWR);

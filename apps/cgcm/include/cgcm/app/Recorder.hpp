@@ -18,7 +18,7 @@ namespace cgcm::app {
 /// Gap on the axis and contact radius of a two-body contact state.
 class ContactProbe {
  public:
-  ContactProbe(const ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem);
+  ContactProbe(const mesh::ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem);
 
   /// Distance along the axis between the apex nodes. Collective.
   Real gap(const assembly::Vector& u) const;
@@ -30,7 +30,7 @@ class ContactProbe {
   Real contactRadius(const assembly::Vector& u) const;
 
  private:
-  ContactGeometry c_;
+  mesh::ContactGeometry c_;
   const mesh::Mesh& mesh_;
   assembly::Problem& problem_;
   LocalIndex upper_, lower_;

@@ -10,68 +10,23 @@
 #include <vector>
 
 #include "cgcm/assembly/Problem.hpp"
-#include "cgcm/interaction/SurfaceInteraction.hpp"
-#include "cgcm/interaction/VolumeInteraction.hpp"
+#include "cgcm/interaction/InteractionSetup.hpp"
 #include "cgcm/material/NeoHookean.hpp"
-#include "cgcm/mesh/Mesh.hpp"
+#include "cgcm/mesh/Geometry.hpp"
 #include "cgcm/solver/ModelEvaluator.hpp"
 
 namespace cgcm::app {
 
-/// u_component = offset + scale * (load parameter) on every node of a node set.
-struct DisplacementCondition {
-  std::string nodeSet;
-  int component;
-  Real offset;
-  Real scale;
-};
-
-/// A resultant force: sign * scale * sum of the internal force over a node
-/// set (scale: 2 per symmetry plane of a 3D mesh, for the whole body's force);
-/// with a direction, its component along it instead of `component`, `sign`.
-struct ForceResponse {
-  std::string nodeSet;
-  int component;
-  Real sign;
-  Real scale = 1.0;
-  std::vector<Real> direction = {};  ///< unit vector (dim entries), or empty
-};
-
-/// The interaction between the bodies (Method 3 or Method 1) and its scales.
-struct InteractionSetup {
-  std::shared_ptr<const interaction::PairPotential> potential;
-  std::vector<Real> densities;  ///< reference density per body
-  interaction::SurfaceInteractionOptions options;         ///< Method 3
-  bool volumeMethod = false;                              ///< Method 1 ("volume pair") instead
-  interaction::VolumeInteractionOptions volumeOptions;    ///< Method 1
-  Real searchRadiusFactor = 2.0;  ///< graph search radius / cutoff (> 1)
-  Real gammaL = 0.0, gammaW = 0.0;  ///< the deck's scaling parameters (THEORY section 4)
-};
-
-/// Two-body contact responses: the gap on the axis between the apex nodes,
-/// and the contact radius (where the surfaces are `contactDistance` apart).
-struct ContactGeometry {
-  std::string upperApex, lowerApex;  ///< node sets of one node each
-  int upperBody = 0, lowerBody = 1;
-  Real contactDistance = 0.0;        ///< r_S0 (Lennard-Jones) or its value for the same r0
-};
-
+/// What a run solves: the formulation, the bodies' materials, the model (mesh,
+/// conditions, responses) and the interaction between the bodies.
 struct ProblemSetup {
-  std::shared_ptr<mesh::Mesh> mesh;  ///< the whole mesh; null on ranks other than 0 of buildProblem(comm, deck)
-  assembly::Formulation formulation;
+  Formulation formulation = Formulation::Axisymmetric;
   material::NeoHookean material;  ///< the deck's Material: every body's unless bodyMaterials says otherwise
   /// Per body (index = body id): Material overridden by Bodies/<name>; empty: `material` everywhere.
   std::vector<material::NeoHookean> bodyMaterials;
-  std::vector<DisplacementCondition> conditions;
-  ForceResponse load;  ///< the "P" column of the load curve
-  /// Initial guess at the start of the load path: these displacements (scaled
-  /// by the load) on whole bodies, e.g. the rigid approach of the upper body.
-  std::vector<DisplacementCondition> initialMotion;
-  /// Two bodies: the same resultant measured at the second body's support
-  /// ("P_lower"); it equals P up to the interaction's force imbalance.
-  std::optional<ForceResponse> balance;
-  std::optional<InteractionSetup> interaction;
-  std::optional<ContactGeometry> contact;
+  /// The mesh (null on ranks other than 0 of buildProblem(comm, deck)), its conditions and force responses.
+  mesh::Model model;
+  std::optional<interaction::InteractionSetup> interaction;  ///< when the bodies interact
   std::vector<std::string> report;  ///< scales and derived parameters, printed at the start of a run
   assembly::CellPartition partition = assembly::CellPartition::Geometric;  ///< Solver/Partition
   /// Force scale F_ref of the convergence test: the paper's force unit
@@ -101,8 +56,6 @@ ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 /// part as Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
 ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
 
-assembly::Formulation parseFormulation(const std::string& name);
-
 /// The discrete problem of a set-up: dof distribution, problem (with the
 /// interaction when there is one), Dirichlet conditions and ModelEvaluator,
 /// whose p(0) is (u, gammaW, gammaL) with an interaction and (u) without.
@@ -112,14 +65,13 @@ struct Discretization {
   std::shared_ptr<const mesh::Mesh> mesh;
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
-  std::shared_ptr<interaction::SurfaceInteraction> interaction;  ///< the problem's Method 3, or null
-  std::shared_ptr<interaction::VolumeInteraction> volumeInteraction;  ///< the problem's Method 1, or null
+  std::shared_ptr<interaction::Interaction> interaction;  ///< the problem's interaction, or null
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   Teuchos::RCP<solver::ModelEvaluator> model;
 };
 
 /// Distributes and assembles `setup` on `comm`: rank 0 partitions its mesh and sends every rank its
-/// part (Method 1: the whole mesh); the other ranks' `setup.mesh`, if any, is not read. Collective.
+/// part (Method 1: the whole mesh); the other ranks' `setup.model.mesh`, if any, is not read. Collective.
 Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
                           Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver);
 /// The same, with the linear solver built from a validated "Linear Solver"

@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "cgcm/assembly/Formulation.hpp"
+#include "cgcm/core/Formulation.hpp"
 
 namespace cgcm::app {
 
@@ -25,11 +25,11 @@ struct SizeEstimate {
 };
 
 /// From the node and cell counts and the formulation.
-SizeEstimate estimateSize(double nodes, double cells, assembly::Formulation formulation);
+SizeEstimate estimateSize(double nodes, double cells, Formulation formulation);
 
 /// For a built-in mesh (Geometry/Type sphere on half-space, sphere on sphere,
 /// block), from the deck's parameters alone; empty for a mesh file.
-std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& deck, assembly::Formulation formulation);
+std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& deck, Formulation formulation);
 
 struct MemoryLimit {
   double megabytes;

@@ -11,7 +11,7 @@
 #include <Kokkos_Core.hpp>
 
 #include "cgcm/assembly/DofMap.hpp"
-#include "cgcm/assembly/Formulation.hpp"
+#include "cgcm/core/Formulation.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 

@@ -15,7 +15,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "cgcm/assembly/Formulation.hpp"
+#include "cgcm/core/Formulation.hpp"
 #include "cgcm/assembly/TpetraTypes.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 

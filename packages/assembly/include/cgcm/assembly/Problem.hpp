@@ -13,7 +13,7 @@
 
 #include "cgcm/assembly/BulkPart.hpp"
 #include "cgcm/assembly/DofMap.hpp"
-#include "cgcm/assembly/Formulation.hpp"
+#include "cgcm/core/Formulation.hpp"
 #include "cgcm/assembly/InteractionPart.hpp"
 #include "cgcm/assembly/SurfaceInteractionPart.hpp"
 #include "cgcm/assembly/VolumeInteractionPart.hpp"
@@ -74,8 +74,7 @@ class Problem {
   /// radius, `searchRadiusFactor` (> 1) times the interaction's current
   /// reach (the cutoff; Method 1: cutoff + skin), refreshed by
   /// updateInteractionGraph.
-  void setInteraction(std::shared_ptr<interaction::SurfaceInteraction> interaction, Real searchRadiusFactor);
-  void setInteraction(std::shared_ptr<interaction::VolumeInteraction> interaction, Real searchRadiusFactor);
+  void setInteraction(std::shared_ptr<interaction::Interaction> interaction, Real searchRadiusFactor);
   bool hasInteraction() const { return bool(interactionPart_); }
   /// Method 3's interaction, or null (no interaction, or Method 1).
   const interaction::SurfaceInteraction* interaction() const {

@@ -22,18 +22,11 @@
 #include <Kokkos_Macros.hpp>
 #include <cmath>
 
+#include "cgcm/core/Formulation.hpp"
 #include "cgcm/core/Types.hpp"
 #include "cgcm/interaction/ClosestPointSearch.hpp"
 
 namespace cgcm::interaction {
-
-/// Kinematics of the surfaces: 2D segments (plane strain, axisymmetric) or
-/// 3D triangles and quadrilaterals (Method3Kernel3D.hpp).
-enum class Formulation { PlaneStrain, Axisymmetric, ThreeD };
-
-inline const char* formulationName(Formulation f) {
-  return f == Formulation::PlaneStrain ? "plane-strain" : f == Formulation::Axisymmetric ? "axisymmetric" : "3D";
-}
 
 /// Diagnostics of one pair evaluation.
 struct PairState {

@@ -93,6 +93,8 @@ class LennardJones final : public PairPotential {
   Real adhesionWorkCoefficient() const override;
   Real peakTractionCoefficient() const override;
 
+  /// r_S0 = r0 / 15^(1/6) for the length scale r0.
+  static Real surfaceEquilibriumDistance(Real r0);
   /// f_w = (pi/8) 15^(1/3) = 0.96848...
   static Real workFactor();
   /// (2 sqrt5 / 9) pi = 1.5611...

@@ -58,6 +58,7 @@
 
 #include "cgcm/core/Types.hpp"
 #include "cgcm/interaction/ClosestPointSearch.hpp"
+#include "cgcm/interaction/Interaction.hpp"
 #include "cgcm/interaction/Method3Kernel.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/interaction/Quadrature.hpp"
@@ -202,7 +203,7 @@ struct TractionLaw {
   }
 };
 
-class SurfaceInteraction {
+class SurfaceInteraction final : public Interaction {
  public:
   /// surfaces: one per body, index = body id (mesh::Mesh::surfaces); segments
   /// in 2D, triangles or quadrilaterals in 3D. densities: reference density beta0 per body (same size).
@@ -211,9 +212,9 @@ class SurfaceInteraction {
                      std::shared_ptr<const PairPotential> potential, SurfaceInteractionOptions options = {});
 
   const SurfaceInteractionOptions& options() const { return options_; }
-  const PairPotential& potential() const { return *potential_; }
+  const PairPotential& potential() const override { return *potential_; }
   const GaussRule& quadrature() const { return rule_; }
-  int numBodies() const { return int(surfaces_.size()); }
+  int numBodies() const override { return int(surfaces_.size()); }
   const mesh::Surface& surface(int body) const { return surfaces_[body]; }
   /// Spatial dimension (2 or 3): coordinates per node.
   int dim() const { return dim_; }
@@ -222,7 +223,7 @@ class SurfaceInteraction {
   const mesh::Surface& targetSurface(int body) const { return targets_[body]; }
   Real density(int body) const { return densities_[body]; }
   /// Absolute cutoff in use (scaled by the length scale).
-  Real cutoff() const { return cutoff_; }
+  Real cutoff() const override { return cutoff_; }
   /// Absolute width delta of the projection blend in use (scaled by the
   /// length scale; 0: closest segment only).
   Real projectionSmoothing() const { return smoothing_; }
@@ -321,18 +322,11 @@ class SurfaceInteraction {
     return TractionLaw<P>{potential, strength_ * densities_[k] * densities_[l], taperStart_, cutoff_, lengthScale_};
   }
 
-  /// Scales every traction by `strength` > 0 (the potential's epsilon times
-  /// strength: w and sigma_max scale with it, r_S0 does not). Default 1.
-  void setStrength(Real strength);
-  Real strength() const { return strength_; }
-
-  /// Stretches the traction law by the length b > 0 (default 1): T(r) =
-  /// strength T_1(r/b), T_1 the law at b = 1 including its taper, so the
-  /// cutoff, the taper start and the projection smoothing scale with b. For
-  /// Lennard-Jones this is the potential with r0 b and epsilon / b^3. The
-  /// next updatePairs uses the new cutoff.
-  void setLengthScale(Real b);
-  Real lengthScale() const { return lengthScale_; }
+  /// Interaction: the next updatePairs uses the new cutoff.
+  void setStrength(Real strength) override;
+  Real strength() const override { return strength_; }
+  void setLengthScale(Real b) override;
+  Real lengthScale() const override { return lengthScale_; }
 
  private:
   void beginEvaluation();

@@ -45,6 +45,7 @@
 #include "cgcm/core/Types.hpp"
 #include "cgcm/fem/Elements.hpp"
 #include "cgcm/interaction/Method3Kernel.hpp"
+#include "cgcm/interaction/Interaction.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/interaction/VolumePairLaw.hpp"
 #include "cgcm/mesh/Mesh.hpp"
@@ -329,7 +330,7 @@ struct VolumePairFunctor {
 
 }  // namespace detail
 
-class VolumeInteraction {
+class VolumeInteraction final : public Interaction {
  public:
   /// mesh: every body's cells (Quad4 in 2D; Hex8, Tet4 in 3D); densities:
   /// beta0 per body. Throws InputError for inconsistent arguments or cell
@@ -338,12 +339,12 @@ class VolumeInteraction {
                     std::shared_ptr<const PairPotential> potential, VolumeInteractionOptions options = {});
 
   const VolumeInteractionOptions& options() const { return options_; }
-  const PairPotential& potential() const { return *potential_; }
-  int numBodies() const { return numBodies_; }
+  const PairPotential& potential() const override { return *potential_; }
+  int numBodies() const override { return numBodies_; }
   int dim() const { return dim_; }
   Real density(int body) const { return densities_[body]; }
   /// Absolute cutoff and skin in use (scaled by the length scale).
-  Real cutoff() const { return cutoff1_ * lengthScale_; }
+  Real cutoff() const override { return cutoff1_ * lengthScale_; }
   Real skin() const { return skin1_ * lengthScale_; }
   int maxQuadratureOrder() const { return maxOrder_; }
   /// The point-pair coefficients in use (strength and length scale applied).
@@ -377,13 +378,11 @@ class VolumeInteraction {
 
   const VolumeInteractionSummary& summary() const { return summary_; }
 
-  /// Scales the potential's epsilon by `strength` > 0 (default 1).
-  void setStrength(Real strength);
-  Real strength() const { return strength_; }
-  /// Stretches the law by b > 0: r0 -> b r0, epsilon -> epsilon / b^3 (as
-  /// SurfaceInteraction::setLengthScale); the cutoff and skin scale with b.
-  void setLengthScale(Real b);
-  Real lengthScale() const { return lengthScale_; }
+  /// Interaction: the skin scales with the length scale too.
+  void setStrength(Real strength) override;
+  Real strength() const override { return strength_; }
+  void setLengthScale(Real b) override;
+  Real lengthScale() const override { return lengthScale_; }
 
  private:
   /// Directed pairs of cells whose bounding boxes at `coords` are within

@@ -27,8 +27,9 @@ double parseDouble(const std::string& path, const std::string& text);
 
 /// Validates `deck` against `valid` and fills in defaults. Unknown names, wrong
 /// types and out-of-range values throw InputError with the full parameter path
-/// and the allowed values.
-void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid);
+/// (`prefix` + the path in `deck`, e.g. "Bodies/tip/" for a sublist checked on
+/// its own) and the allowed values.
+void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& prefix = "");
 
 /// Prints every parameter with its default, type and documentation.
 void printHelp(std::ostream& out, const Teuchos::ParameterList& valid);

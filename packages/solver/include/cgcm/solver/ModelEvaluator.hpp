@@ -17,21 +17,12 @@
 
 #include "cgcm/assembly/Problem.hpp"
 #include "cgcm/assembly/Dirichlet.hpp"
+#include "cgcm/core/ScalarParameter.hpp"
 #include "cgcm/solver/ParameterizedModel.hpp"
 
 namespace cgcm::solver {
 
 using assembly::Matrix;
-
-/// A scalar parameter of the residual besides the load u: its name, its
-/// nominal value and how a value reaches the physics (e.g. the interaction
-/// strength for gammaW). `apply` must make the residual a smooth function of
-/// the value.
-struct ScalarParameter {
-  std::string name;
-  Real nominal = 0.0;
-  std::function<void(Real)> apply;
-};
 
 class ModelEvaluator : public ParameterizedModel {
  public:

@@ -1,0 +1,239 @@
+#include "cgcm/interaction/InteractionSetup.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
+#include "cgcm/interaction/Normalisation.hpp"
+
+namespace cgcm::interaction {
+
+using Teuchos::ParameterList;
+
+Teuchos::RCP<const ParameterList> validParameters() {
+  using validators::atLeast;
+  using validators::between;
+  using validators::choices;
+  using validators::intAtLeast;
+  using validators::intBetween;
+  static const Teuchos::RCP<const ParameterList> valid = [] {
+    auto inter = Teuchos::rcp(new ParameterList("Interaction"));
+    std::vector<std::string> names;
+    std::string help;
+    for (const auto& e : potentialRegistry()) {
+      names.push_back(e.deckName);
+      help += std::string(help.empty() ? "" : "; ") + "\"" + e.deckName + "\": " + e.description;
+    }
+    inter->set("Potential", names.front(), help, choices(names));
+    inter->set("Method", "half-space point",
+               "\"half-space point\" (Method 3: each surface point against the other body as a half-space) or "
+               "\"volume pair\" (Method 1: quadrature over pairs of cells of two bodies, the reference; cost grows "
+               "with the cells within the cutoff, and cells near the surfaces should be about r0 or smaller)",
+               choices({"half-space point", "volume pair"}));
+    inter->set("Volume Quadrature Order", 2,
+               "volume pair: Gauss points per direction of a cell for pairs of cells far apart (1 .. 6); closer "
+               "pairs get more, up to the Max Volume Quadrature Order",
+               intBetween(1, 6));
+    inter->set("Max Volume Quadrature Order", 6,
+               "volume pair: most Gauss points per direction for pairs of cells close to each other (1 .. 12 in "
+               "2D, 1 .. 6 in 3D)",
+               intBetween(1, 12));
+    inter->set("Pair List Skin", 1.0,
+               "volume pair: the pair list covers cutoff + skin (units of r0) and is rebuilt when a node has moved "
+               "by half the skin",
+               atLeast(0.01));
+    inter->set("gammaL", 50.0, "R0 / r0: geometric scale (22)", atLeast(1e-300));
+    inter->set("gammaW", 200.0, "Y / (beta0^2 r0^3 epsilon): energy-density ratio (28)", atLeast(1e-300));
+    inter->set("gammaL bar", 0.0,
+               "the paper's equivalent parameter; > 0 replaces gammaL through the Barred Convention", atLeast(0.0));
+    inter->set("gammaW bar", 0.0,
+               "the paper's equivalent parameter; > 0 replaces gammaW through the Barred Convention", atLeast(0.0));
+    inter->set("Barred Convention", "literal",
+               "how the paper's barred values convert: \"literal\" (gammaL = gammaL bar / (3/4)^(1/6), gammaW = "
+               "gammaW bar / sqrt(3), the reading the paper's stability statements and Fig. 11 state support; "
+               "doc/theory.md) or \"identity\" (gamma = gamma bar)",
+               choices({"identity", "literal"}));
+    inter->set("r0", 0.0,
+               "physical input instead of the gammas: equilibrium distance of the pair potential (> 0 to use)",
+               atLeast(0.0));
+    inter->set("epsilon", 0.0, "physical input: energy well of the pair potential (with r0)", atLeast(0.0));
+    inter->set("beta0", 1.0, "reference particle density of both bodies", atLeast(1e-300));
+    inter->set("Quadrature Points", 4,
+               "Gauss points per surface segment; in 3D per direction of a facet (n x n on a quadrilateral; on a "
+               "triangle 1, 6, 7 points for n = 1, 2, 3 and 6 n (n + 1) beyond), and 2 unless given",
+               intAtLeast(1));
+    inter->set("Cutoff", 10.0, "interaction cutoff in units of r0: farther points are skipped", atLeast(1.0));
+    inter->set("Cutoff Taper", 0.2,
+               "fraction of the cutoff over which the traction is blended smoothly (C1) to zero, 0 .. 0.9; "
+               "0 is a sharp cutoff, whose residual jumps when points cross it",
+               between(0.0, 0.9));
+    inter->set("Projection Smoothing", SurfaceInteractionOptions::kDefaultProjectionSmoothing,
+               "width delta of the blend of a point's projections onto neighbouring segments (3D: triangles), in "
+               "units of r0: near a concave corner (3D: edge) of the other surface the closest facet switches and "
+               "the force direction would jump; the blend keeps the residual smooth. 0 uses the closest facet "
+               "alone (the paper's Method 3; "
+               "Newton can then find no equilibrium next to such a switch)",
+               atLeast(0.0));
+    inter->set("Search Radius Factor", 2.0,
+               "matrix-graph search radius / cutoff (> 1); volume pair: the radius is cutoff + factor x Pair List "
+               "Skin",
+               atLeast(1.01));
+    return Teuchos::RCP<const ParameterList>(inter);
+  }();
+  return valid;
+}
+
+namespace {
+
+// (gammaL, gammaW) from whichever of the three parameterisations the list gives.
+ScalingParameters scalingFrom(const ParameterList& in, const ReferenceScales& scales) {
+  const bool barred = in.get<double>("gammaL bar") > 0.0 || in.get<double>("gammaW bar") > 0.0;
+  const bool physical = in.get<double>("r0") > 0.0 || in.get<double>("epsilon") > 0.0;
+  const bool plainSet = !in.getEntry("gammaL").isDefault() || !in.getEntry("gammaW").isDefault();
+  if (int(barred) + int(physical) + int(plainSet) > 1)
+    throw InputError("Interaction: give one of (gammaL, gammaW), (gammaL bar, gammaW bar) or (r0, epsilon)");
+  if (barred) {
+    const Real gLb = in.get<double>("gammaL bar"), gWb = in.get<double>("gammaW bar");
+    if (!(gLb > 0.0 && gWb > 0.0)) throw InputError("Interaction: set both gammaL bar and gammaW bar (> 0)");
+    const bool literal = in.get<std::string>("Barred Convention") == "literal";
+    return {literal ? gLb / std::pow(0.75, 1.0 / 6.0) : gLb, literal ? gWb / std::sqrt(3.0) : gWb};
+  }
+  if (physical) {
+    if (!(in.get<double>("r0") > 0.0 && in.get<double>("epsilon") > 0.0))
+      throw InputError("Interaction: set both r0 and epsilon (> 0)");
+    return toScaling({in.get<double>("epsilon"), in.get<double>("r0"), in.get<double>("beta0"), scales.R0,
+                      scales.youngsModulus});
+  }
+  return {in.get<double>("gammaL"), in.get<double>("gammaW")};
+}
+
+}  // namespace
+
+InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& scales, Formulation formulation) {
+  const Real beta0 = in.get<double>("beta0");
+  const ScalingParameters gammas = scalingFrom(in, scales);
+  const auto phys = interaction::fromScaling(gammas.gammaL, gammas.gammaW, scales.R0, scales.youngsModulus, beta0);
+  InteractionSetup s;
+  s.potential = makePotential(in.get<std::string>("Potential"), phys.epsilon, phys.r0);
+  s.density = beta0;
+  s.gammaL = gammas.gammaL;
+  s.gammaW = gammas.gammaW;
+  s.method = in.get<std::string>("Method") == "volume pair" ? Method::VolumePair : Method::HalfSpacePoint;
+  s.searchRadiusFactor = in.get<double>("Search Radius Factor");
+
+  auto& surface = s.surfaceOptions;
+  surface.formulation = formulation;
+  // 3D: n x n points per quad, 6 or 7 per triangle at n = 2, 3, but 6 n (n + 1) beyond: 2 unless set
+  const bool threeD = formulation == Formulation::ThreeD;
+  surface.quadraturePoints = threeD && in.getEntry("Quadrature Points").isDefault() ? 2 : in.get<int>("Quadrature Points");
+  surface.cutoff = in.get<double>("Cutoff") * phys.r0;
+  surface.cutoffTaper = in.get<double>("Cutoff Taper");
+  surface.projectionSmoothing = in.get<double>("Projection Smoothing") * phys.r0;
+  if ((1.0 - surface.cutoffTaper) * in.get<double>("Cutoff") < 2.0)
+    throw InputError("Interaction/Cutoff Taper = " + std::to_string(surface.cutoffTaper) +
+                     " with Interaction/Cutoff = " + std::to_string(in.get<double>("Cutoff")) +
+                     " starts the taper below 2 r0, in the range of the repulsion; need (1 - taper) * cutoff >= 2");
+
+  auto& volume = s.volumeOptions;
+  volume.formulation = formulation;
+  volume.quadratureOrder = in.get<int>("Volume Quadrature Order");
+  volume.maxQuadratureOrder = in.get<int>("Max Volume Quadrature Order");
+  volume.cutoff = surface.cutoff;
+  volume.skin = in.get<double>("Pair List Skin") * phys.r0;
+  if (s.method == Method::VolumePair && volume.maxQuadratureOrder < volume.quadratureOrder)
+    throw InputError("Interaction/Max Volume Quadrature Order = " + std::to_string(volume.maxQuadratureOrder) +
+                     " is below Interaction/Volume Quadrature Order = " + std::to_string(volume.quadratureOrder));
+  if (s.method == Method::VolumePair && threeD && volume.maxQuadratureOrder > kMaxVolumeOrder3D)
+    throw InputError("Interaction/Max Volume Quadrature Order = " + std::to_string(volume.maxQuadratureOrder) +
+                     ": at most " + std::to_string(kMaxVolumeOrder3D) + " in 3D");
+  return s;
+}
+
+Real InteractionSetup::contactDistance() const { return LennardJones::surfaceEquilibriumDistance(potential->r0()); }
+
+std::shared_ptr<Interaction> InteractionSetup::create(const mesh::Mesh& mesh) const {
+  const std::vector<Real> densities(std::size_t(mesh.numBodies), density);
+  if (method == Method::VolumePair)
+    return std::make_shared<VolumeInteraction>(mesh, densities, potential, volumeOptions);
+  return std::make_shared<SurfaceInteraction>(mesh.surfaces, densities, potential, surfaceOptions);
+}
+
+std::vector<ScalarParameter> InteractionSetup::scalarParameters(std::shared_ptr<Interaction> interaction) const {
+  const Real gammaW0 = gammaW, gammaL0 = gammaL;
+  return {{"gammaW", gammaW0,
+           [interaction, gammaW0](Real value) {
+             if (!(value > 0.0)) throw NumericalError("gammaW = " + std::to_string(value) + " <= 0");
+             interaction->setStrength(gammaW0 / value);
+           }},
+          // u keeps the origin of the deck's gammaL
+          {"gammaL", gammaL0, [interaction, gammaL0](Real value) {
+             if (!(value > 0.0)) throw NumericalError("gammaL = " + std::to_string(value) + " <= 0");
+             interaction->setLengthScale(gammaL0 / value);
+           }}};
+}
+
+void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation) const {
+  // Method 1 integrates over the cells the mesh has: a symmetry plane (or, in
+  // plane strain, the symmetry line of the built-in half models) would drop
+  // the mirror half of every body from the interaction.
+  if (method != Method::VolumePair) return;
+  std::vector<std::string> planes;
+  for (const char* set : {"symmetry x", "symmetry y", "symmetry z"})
+    if (mesh.nodeSets.count(set)) planes.push_back(set);
+  if (formulation == Formulation::PlaneStrain && mesh.nodeSets.count("axis"))
+    planes.push_back("axis (a symmetry line in plane strain)");
+  if (planes.empty()) return;
+  std::string list;
+  for (const auto& p : planes) list += (list.empty() ? "\"" : ", \"") + p + "\"";
+  throw InputError("Interaction/Method = \"volume pair\" integrates over the whole bodies, but the mesh is a "
+                   "symmetric part of them (" + list + "): mirror it (Geometry/Mirror Planes) or use "
+                   "\"half-space point\"");
+}
+
+std::vector<std::string> describe(const InteractionSetup& s, const ReferenceScales& scales) {
+  // Derived scales (THEORY sections 2, 4, 5).
+  const Real beta0 = s.density, r0 = s.potential->r0(), epsilon = s.potential->epsilon();
+  const Real Y = scales.youngsModulus, nu = scales.poissonRatio, R = scales.reducedRadius, R0 = scales.R0;
+  const Real rS0 = s.contactDistance();
+  const Real cutoff = s.surfaceOptions.cutoff;
+  const Real taperStart = (1.0 - s.surfaceOptions.cutoffTaper) * cutoff;
+  const Real w = LennardJones::workFactor() * beta0 * beta0 * epsilon * std::pow(r0, 4);
+  const Real sigmaMax = LennardJones::peakTractionFactor() * beta0 * beta0 * epsilon * std::pow(r0, 3);
+  const Real Estar = Y / (2.0 * (1.0 - nu * nu));
+  const Real tabor = std::cbrt(R * w * w / (Estar * Estar * rS0 * rS0 * rS0));
+  const Real lambda = sigmaMax * std::cbrt(9.0 * R / (2.0 * kPi * w * Estar * Estar));
+  std::vector<std::string> lines;
+  std::ostringstream o;
+  o.precision(6);
+  o << "gammaL = " << s.gammaL << ", gammaW = " << s.gammaW << " (barred, literal reading: "
+    << s.gammaL * std::pow(0.75, 1.0 / 6.0) << ", " << s.gammaW * std::sqrt(3.0)
+    << "); gammaK = gammaW/gammaL = " << s.gammaW / s.gammaL;
+  lines.push_back(o.str());
+  o.str("");
+  o << "R0 = " << R0 << ", E0 = Y R0^3 = " << Y * R0 * R0 * R0 << ", r0 = " << r0 << ", epsilon = " << epsilon
+    << ", beta0 = " << beta0;
+  lines.push_back(o.str());
+  o.str("");
+  // the potential's own surface properties (a repulsive one has no r_S0 and w = 0)
+  const auto ownRS0 = s.potential->surfaceEquilibriumDistance();
+  o << "potential " << s.potential->name() << ": r_S0 = ";
+  if (ownRS0)
+    o << *ownRS0;
+  else
+    o << "none";
+  o << ", w = " << s.potential->workOfAdhesion(beta0, beta0) << ", sigma_max = "
+    << s.potential->peakTraction(beta0, beta0) << ", cutoff = " << cutoff << " (taper from " << taperStart
+    << "), |T(taper start)| = " << std::abs(s.potential->traction(taperStart, beta0, beta0)) / sigmaMax
+    << " sigma_max(Lennard-Jones), work removed by the cutoff = "
+    << 100.0 * neglectedWorkFraction(*s.potential, taperStart, cutoff) << " % of w";
+  lines.push_back(o.str());
+  o.str("");
+  o << "Lennard-Jones scales (of its r0 and epsilon, whatever the potential): Tabor mu = " << tabor
+    << ", Maugis-Dugdale lambda (theory) = " << lambda << ", 2 pi w R = " << 2 * kPi * w * R
+    << ", 1.5 pi w R = " << 1.5 * kPi * w * R << " (R = " << R << ")";
+  lines.push_back(o.str());
+  return lines;
+}
+
+}  // namespace cgcm::interaction

@@ -1,0 +1,27 @@
+#pragma once
+// The deck's Material sublist, declared and read here: its parameters with
+// defaults and help, the NeoHookean they describe, and per-body overrides
+// (Bodies/<name>) checked like the sublist itself.
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+#include <vector>
+
+#include "cgcm/material/NeoHookean.hpp"
+
+namespace cgcm::material {
+
+/// The Material sublist: Young's Modulus, Poisson's Ratio, Volumetric Energy, Kinematics.
+Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+
+/// The material of a validated Material sublist (defaults filled).
+NeoHookean fromParameters(const Teuchos::ParameterList& material);
+
+/// One body's material: the validated `material` sublist with the entries of
+/// `overrides` (any of its parameters) replacing its own. The overrides are
+/// checked as the sublist is: unknown names, text that is not a number and
+/// values out of range throw InputError naming `path` + the parameter.
+NeoHookean fromParameters(const Teuchos::ParameterList& material, const Teuchos::ParameterList& overrides,
+                          const std::string& path);
+
+}  // namespace cgcm::material

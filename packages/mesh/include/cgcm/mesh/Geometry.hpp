@@ -1,0 +1,81 @@
+#pragma once
+// The deck's Geometry sublist, declared and read here: the built-in
+// geometries (the paper's sphere on a half-space or on a second sphere, a
+// block) and gmsh meshes with the physical-group convention of
+// meshes/README.md, each turned into a Model: the mesh, the displacement
+// conditions that hold and drive its bodies, and the force responses the load
+// curve reports.
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cgcm/core/Formulation.hpp"
+#include "cgcm/mesh/Mesh.hpp"
+
+namespace cgcm::mesh {
+
+/// u_component = offset + scale * (load parameter u) on every node of a node set.
+struct DisplacementCondition {
+  std::string nodeSet;
+  int component;
+  Real offset;
+  Real scale;
+};
+
+/// A resultant force: sign * scale * sum of the internal force over a node
+/// set (scale: 2 per symmetry plane of a 3D mesh, for the whole body's force);
+/// with a direction, its component along it instead of `component`, `sign`.
+struct ForceResponse {
+  std::string nodeSet;
+  int component;
+  Real sign;
+  Real scale = 1.0;
+  std::vector<Real> direction = {};  ///< unit vector (dim entries), or empty
+};
+
+/// Two-body contact responses: the gap on the axis between the apex nodes,
+/// and the contact radius (where the surfaces are `contactDistance` apart).
+struct ContactGeometry {
+  std::string upperApex, lowerApex;  ///< node sets of one node each
+  int upperBody = 0, lowerBody = 1;
+  Real contactDistance = 0.0;        ///< r_S0 (Lennard-Jones) or its value for the same r0
+};
+
+/// A geometry ready for the solver.
+struct Model {
+  std::shared_ptr<Mesh> mesh;
+  std::vector<DisplacementCondition> conditions;
+  ForceResponse force;  ///< the "P" column of the load curve
+  /// Initial guess at the start of the load path: these displacements (scaled
+  /// by u) on whole bodies, e.g. the rigid approach of the upper body.
+  std::vector<DisplacementCondition> initialMotion;
+  /// Two bodies: the same resultant measured at the second body's support
+  /// ("P_lower"); it equals P up to the interaction's force imbalance.
+  std::optional<ForceResponse> balance;
+  std::optional<ContactGeometry> contact;
+  /// The bodies interact (the sphere geometries; gmsh meshes of several bodies).
+  bool interacting = false;
+  /// Area (per unit thickness in plane strain: length) whose product with
+  /// Young's modulus is the force scale of the convergence test: R0^2 (R0)
+  /// for contact, the loaded face of a block.
+  Real referenceArea = 1.0;
+  std::vector<std::string> report;  ///< what the run's log says about the model
+};
+
+/// The Geometry sublist: every parameter with its default and help.
+Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+
+/// The reduced radius R1 R2 / (R1 + R2) of the contact a validated Geometry
+/// sublist describes (the Sphere Radius unless it is a sphere on a sphere).
+Real reducedRadius(const Teuchos::ParameterList& geometry);
+
+/// The model of a validated Geometry sublist. `contactDistance` (r_S0) puts
+/// u = 0 where the undeformed surfaces of interacting bodies are that far
+/// apart. Throws InputError for meshes and combinations the validators cannot
+/// reject (a body that can move rigidly, a missing node set, overlapping bodies, ...).
+Model buildModel(const Teuchos::ParameterList& geometry, Formulation formulation, Real contactDistance);
+
+}  // namespace cgcm::mesh
