@@ -79,7 +79,17 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
                                                resume ? resume->exodusSteps : -1);
 }
 
-void Recorder::record(const Vector& x, const std::vector<Real>& p, LoadPoint row) {
+void Recorder::record(const solver::PathState& state) {
+  const Vector& x = *state.x;
+  const std::vector<Real>& p = state.p;
+  LoadPoint row;
+  row.step = state.step;
+  row.newtonIterations = state.iterations;
+  row.stable = state.stable;
+  row.fold = state.fold;
+  row.jump = state.jump;
+  row.residual = state.residual;
+  row.cutbacks = state.cutbacks;
   model_.evaluateUnconstrained(x, p, f_);
   auto resultant = [&](const mesh::ForceResponse& r) {  // collective
     const auto& nodes = mesh_.nodeSet(r.nodeSet);

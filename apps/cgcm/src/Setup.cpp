@@ -13,6 +13,7 @@
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
 #include "cgcm/solver/NewtonSolver.hpp"
+#include "cgcm/solver/PathFollower.hpp"
 
 namespace cgcm::app {
 
@@ -46,34 +47,9 @@ RCP<const ParameterList> validParameters() {
                  "Lennard-Jones interaction between the bodies (sphere geometries), THEORY sections 2, 4") =
       *interaction::validParameters();
 
-  auto& loading = valid->sublist("Loading", false,
-                                 "how the path is followed: the load parameter u is the prescribed displacement");
-  loading.set("Control", "displacement",
-              "\"displacement\": steps in u along the Approach Path; at a fold (jump-to-contact, jump-off-contact) "
-              "the state jumps to the far stable branch at the same u (found by continuation), as under a rigid "
-              "loading device. \"arc-length\": LOCA pseudo-arclength continuation through the folds, the unstable "
-              "branch included (rows with stable = 0)",
-              choices({"displacement", "arc-length"}));
-  loading.setParameters(*solver::LoadPathSettings::validParameters());
-  loading.set("Continuation Parameter", "u",
-              "\"u\": the path is the Approach Path. \"gammaW\" or \"gammaL\": after the Approach Path (at the "
-              "deck's gammas), arc-length continuation in that parameter along the Parameter Path at the last u",
-              choices({"u", "gammaW", "gammaL"}));
-  loading.set("Parameter Path", Teuchos::Array<double>{},
-              "waypoints of the Continuation Parameter when it is not u, e.g. {100, 20}: from the deck's value "
-              "through these; empty for u");
-  loading.set("Parameter Bounds", Teuchos::Array<double>{},
-              "{lower, upper}: the continuation stops as failed if its parameter leaves this range (arc-length "
-              "control and jumps; default: the path's range widened by twice its span on each side)");
-
-  valid->sublist("LOCA", false,
-                 "passed to LOCA's stepper (sublists Stepper, Predictor, Step Size, Bifurcation, ... with LOCA's "
-                 "own names), over cgcm's defaults: Stepper/Continuation Method = Arc Length, Max Steps = 2000; "
-                 "Predictor/Method = Tangent; Step Size/Method = Adaptive, Initial, Min and Max Step Size from "
-                 "Loading/Initial, Min and 2 x Max Increment. cgcm sets Stepper/Continuation Parameter, Initial "
-                 "Value, Min and Max Value and Max Nonlinear Iterations itself; names LOCA does not read are "
-                 "rejected before the run")
-      .disableRecursiveValidation();
+  valid->sublist("Loading", false, "how the path is followed: the load parameter u is the prescribed displacement") =
+      *solver::PathPlan::validParameters();
+  valid->sublist("LOCA", false, solver::PathPlan::locaHelp()).disableRecursiveValidation();
 
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");
   solverList.set("Partition", "geometric",

@@ -23,6 +23,7 @@
 #include "cgcm/solver/Continuation.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
+#include "cgcm/solver/PathFollower.hpp"
 
 namespace cgcm::app {
 
@@ -30,107 +31,15 @@ using assembly::Vector;
 
 namespace {
 
-// What the Loading sublist asks for, checked before any work.
-struct PathPlan {
-  bool arcLength = false;
-  solver::LoadPathSettings path;
-  std::string parameter = "u";
-  std::vector<Real> parameterPath;  ///< waypoints of the parameter (not u)
-  std::vector<Real> bounds;         ///< {lower, upper} or empty
-};
-
-PathPlan planPath(const Teuchos::ParameterList& loading, const ProblemSetup& setup) {
-  PathPlan plan;
-  plan.arcLength = loading.get<std::string>("Control") == "arc-length";
-  plan.path = solver::LoadPathSettings::fromParameters(loading);
-  // A jump relaxes in moves of at most a quarter of the interaction length, so that
-  // no iterate skips the equilibrium spacing or pushes a surface through another.
-  if (setup.interaction) plan.path.relaxation.maxIncrement = 0.25 * setup.interaction->potential->r0();
-  plan.parameter = loading.get<std::string>("Continuation Parameter");
-  const auto& pp = loading.get<Teuchos::Array<double>>("Parameter Path");
-  plan.parameterPath.assign(pp.begin(), pp.end());
-  const auto& b = loading.get<Teuchos::Array<double>>("Parameter Bounds");
-  plan.bounds.assign(b.begin(), b.end());
-  if (plan.parameter != "u" && !setup.interaction)
-    throw InputError("Loading/Continuation Parameter = \"" + plan.parameter +
-                     "\" needs an interaction between bodies (a sphere geometry); allowed here: \"u\"");
-  if (plan.parameter == "u" && !plan.parameterPath.empty())
-    throw InputError("Loading/Parameter Path: only with a Continuation Parameter other than \"u\"; the path in u "
-                     "is Loading/Approach Path");
-  if (plan.parameter != "u" && plan.parameterPath.empty())
-    throw InputError("Loading/Parameter Path: give the waypoints of " + plan.parameter + " (e.g. {100, 20})");
-  for (std::size_t i = 0; i < plan.parameterPath.size(); ++i)
-    if (!std::isfinite(plan.parameterPath[i]) || !(plan.parameterPath[i] > 0.0))
-      throw InputError("Loading/Parameter Path: waypoint " + std::to_string(i) + " = " +
-                       std::to_string(plan.parameterPath[i]) + "; " + plan.parameter + " must be finite and > 0");
-  if (!plan.bounds.empty()) {
-    if (plan.bounds.size() != 2 || !(plan.bounds[0] < plan.bounds[1]) || !std::isfinite(plan.bounds[0]) ||
-        !std::isfinite(plan.bounds[1]))
-      throw InputError("Loading/Parameter Bounds: give {lower, upper} with lower < upper (finite), or leave it empty");
-    const auto& wp = plan.parameter == "u" ? plan.path.path : plan.parameterPath;
-    for (Real v : wp)
-      if (v < plan.bounds[0] || v > plan.bounds[1])
-        throw InputError("Loading/Parameter Bounds: the path value " + std::to_string(v) + " lies outside {" +
-                         std::to_string(plan.bounds[0]) + ", " + std::to_string(plan.bounds[1]) + "}");
-  }
-  return plan;
-}
-
-// The bound beyond which a continuation segment from `start` towards
-// `target` counts as run away: the deck's bounds, or the path's range widened
-// by twice its span (positive parameters stay above a thousandth of the path's smallest value).
-Real runawayBound(const PathPlan& plan, const std::vector<Real>& waypoints, Real direction, bool positive) {
-  if (!plan.bounds.empty()) return direction > 0 ? plan.bounds[0] : plan.bounds[1];
-  const auto [lo, hi] = std::minmax_element(waypoints.begin(), waypoints.end());
-  const Real span = *hi - *lo;
-  if (direction > 0) return positive ? std::max(*lo - 2.0 * span, 1e-3 * *lo) : *lo - 2.0 * span;
-  return *hi + 2.0 * span;
-}
-
-}  // namespace
-
-RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
-                        std::ostream& log, RunMode mode) {
-  const bool restart = mode == RunMode::Restart, checkOnly = mode == RunMode::Check;
-  const bool root = comm->getRank() == 0;
-  const auto& out = deck.sublist("Output");
-  const std::string dir = out.get<std::string>("Directory");
-  const bool printSteps = out.get<bool>("Print Steps");
-
-  // Everything that can be rejected is checked before any work starts.
-  const auto setupStart = std::chrono::steady_clock::now();
-  // rank 0 builds the mesh; the other ranks receive their parts in discretize()
-  const ProblemSetup setup = buildProblem(*comm, deck);
-  const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
-  const PathPlan plan = planPath(deck.sublist("Loading"), setup);
-  auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
-                                                               deck.sublist("Solver").sublist("Linear Solver"));
-  newtonSettings.forceScale = setup.forceScale;
-  const int dim = formulationDim(setup.formulation);
-  const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
-  // rejects bad settings now
-  solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim, Teuchos::null, !setup.interaction.has_value());
-  const std::string linearSolverType = solver::resolvedLinearSolverType(linearSolverSettings, dim);
-  Teuchos::ParameterList loca = deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA");
-  {
-    // Step sizes in the problem's units unless the deck gives LOCA's own.
-    auto& step = loca.sublist("Step Size");
-    if (!step.isParameter("Min Step Size")) step.set("Min Step Size", plan.path.minIncrement);
-    if (!step.isParameter("Max Step Size") && plan.parameter == "u") step.set("Max Step Size", plan.path.maxIncrement);
-  }
-
-  std::optional<Checkpoint> resume;
-  if (restart) {
-    if (plan.arcLength || plan.parameter != "u")
-      throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
-                       "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
-    resume = readCheckpoint(dir);
-  }
-  runOnRoot(*comm, [&] {
-    if (restart) return;  // the folder and its parameters.xml are the run's own
+// The output folder: created, with the run's parameters.xml (a restart keeps
+// its own); --check only tells whether it could be.
+void prepareOutput(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck, const std::string& dir,
+                   RunMode mode) {
+  runOnRoot(comm, [&] {
+    if (mode == RunMode::Restart) return;
     // the error_code forms: a name the file system refuses is bad input, not an exception
     std::error_code ec;
-    if (checkOnly) {
+    if (mode == RunMode::Check) {
       const bool exists = std::filesystem::exists(dir, ec);
       if (ec || (exists && !std::filesystem::is_directory(dir, ec)))
         throw InputError("Output/Directory = \"" + dir + "\": cannot create it (" +
@@ -143,201 +52,38 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
                        (ec ? ec.message() : "a file of that name exists") + ")");
     io::writeDeck(deck, dir + "/parameters.xml");
   });
+}
 
-  const auto distributionStart = std::chrono::steady_clock::now();
-  const Discretization disc = discretize(comm, setup, linearSolverSettings);
-  const double distributionSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - distributionStart).count();
-  const std::size_t numNodes = setup.numNodes, numCells = setup.numCells;
-  if (resume && resume->u.size() != disc.dofs->ownedMap()->getGlobalNumElements())
-    throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
-                     " unknowns, the deck's problem " +
-                     std::to_string(disc.dofs->ownedMap()->getGlobalNumElements()) +
-                     " (parameters.xml or the mesh changed since)");
+// checkpoint.bin after every accepted state of a displacement-controlled path
+// (collective: the vectors are gathered on rank 0).
+solver::LoadStepper::CheckpointSink checkpointSink(const std::string& dir, const Recorder& recorder,
+                                                  RootGather& gather, const Real& lastLoad, bool root) {
+  auto failed = std::make_shared<bool>(false);
+  return [&, dir, root, failed](const solver::StepperState& s, const Vector& state, const Vector& before) {
+    Checkpoint c;
+    c.stepper = s;
+    c.lastLoad = lastLoad;
+    c.exodusSteps = recorder.exodusSteps();
+    c.u = gather.gather(state);
+    if (s.havePrevious) c.previous = gather.gather(before);
+    if (!root) return;
+    c.curve = recorder.curve;
+    if (!writeCheckpoint(dir, c) && !*failed) {
+      *failed = true;
+      std::cerr << "cgcm: warning: cannot write " << checkpointPath(dir) << "; the run goes on without\n";
+    }
+  };
+}
+
+// What the run cost: solves, the Jacobian's size, memory and mesh per rank,
+// the assembly timings since `before`, Method 1's pair statistics.
+void measureCost(RunResult& result, const Discretization& disc, const solver::NewtonSolver& newton,
+                 const assembly::AssemblyTimings& timingsBefore) {
   const auto& problem = disc.problem;
-  const auto& model = disc.model;
-  solver::NewtonSolver newton(model, newtonSettings);
-  solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
-  std::unique_ptr<ContactProbe> probe;
-  if (setup.model.contact) probe = std::make_unique<ContactProbe>(*setup.model.contact, *disc.mesh, *problem);
-  const int parameterIndex = model->parameterIndex(plan.parameter);
-
-  if (root && printSteps) {
-    log << "cgcm: " << formulationName(setup.formulation) << ", " << numNodes << " nodes, " << numCells
-        << " cells, " << disc.dofs->ownedMap()->getGlobalNumElements() << " dofs, "
-        << comm->getSize() << " rank(s); " << (plan.arcLength ? "arc-length" : "displacement") << " control\n";
-    for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
-    log << "cgcm: a state is accepted when |f|_2 <= " << newtonSettings.tolerance() << " (Residual Tolerance "
-        << newtonSettings.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
-  }
-
-  if (checkOnly) {
-    Vector u(model->map());
-    model->setLoad(plan.path.path.front());
-    if (plan.arcLength || plan.parameter != "u") continuation.validate(u);
-    RunResult checked;
-    checked.completed = true;
-    checked.numNodes = numNodes;
-    checked.numCells = numCells;
-    checked.numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
-    return checked;
-  }
-
-  // The summary says what the run is doing until it ends.
-  if (root) {
-    std::ofstream running(dir + "/summary.txt");
-    running << "running" << (resume ? " (restarted after step " + std::to_string(resume->stepper.step) + ")" : "")
-            << "\n";
-  }
-
-  // The initial guess: the prescribed motion of whole bodies at the first u
-  // (a restart: the checkpoint's state).
-  Vector u(model->map());
-  RootGather gather(disc.dofs->ownedMap());
-  Vector previous(model->map());
-  if (resume) {
-    gather.scatter(resume->u, u);
-    if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
-  } else if (!setup.model.initialMotion.empty()) {
-    assembly::DirichletConditions motion(disc.dofs);
-    for (const auto& c : setup.model.initialMotion)
-      motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-    motion.impose(plan.path.path.front(), u);
-  }
-  model->setLoad(resume ? resume->stepper.load : plan.path.path.front());
-  if (plan.arcLength || plan.parameter != "u") continuation.validate(u);  // LOCA reads its list: typos stop here
-
-  Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), parameterIndex, printSteps, log,
-                    resume ? &*resume : nullptr);
-  RunResult result;
-  int step = resume ? resume->stepper.step : 0;
-  bool stable = true;
-  auto recordPoint = [&](const solver::PathPoint& pt) {
-    LoadPoint row;
-    row.step = ++step;
-    row.newtonIterations = pt.iterations;
-    row.stable = pt.stable;
-    row.fold = pt.fold;
-    row.residual = pt.residual;
-    recorder.record(*pt.x, pt.p, row);
-    stable = pt.stable;
-  };
-  // One continuation segment from the current state; throws NumericalError if it stops.
-  auto continueTo = [&](int parameter, Real target, const std::vector<Real>& waypoints, Real initialStep) {
-    const Real from = model->parameter(parameter);
-    solver::ContinuationSegment segment;
-    segment.parameter = parameter;
-    segment.target = target;
-    segment.direction = target > from ? 1.0 : -1.0;
-    segment.bound = runawayBound(plan, waypoints, segment.direction, parameter > 0);
-    segment.initialStep = std::min(initialStep, std::abs(target - from));
-    segment.stableStart = stable;
-    const auto r = continuation.run(u, segment, recordPoint);
-    result.continuationSteps += r.steps;
-    result.graphRestarts += r.restarts;
-    if (!r.reached) throw NumericalError(r.failure);
-    u.assign(*r.last.x);
-    for (std::size_t k = 0; k < r.last.p.size(); ++k) model->setParameter(int(k), r.last.p[k]);
-  };
-
-  auto runStart = std::chrono::steady_clock::now();
-  const assembly::AssemblyTimings timingsBefore = problem->timings();
-  try {
-    if (!plan.arcLength) {
-      solver::LoadStepper stepper(model, newton, plan.path, &continuation);
-      Real lastLoad = resume ? resume->lastLoad : plan.path.path.front();
-      bool checkpointFailed = false;
-      solver::LoadStepper::CheckpointSink checkpoint;
-      if (out.get<bool>("Checkpoint"))
-        checkpoint = [&](const solver::StepperState& s, const Vector& state, const Vector& before) {
-          Checkpoint c;  // collective: the vectors are gathered on rank 0
-          c.stepper = s;
-          c.lastLoad = lastLoad;
-          c.exodusSteps = recorder.exodusSteps();
-          c.u = gather.gather(state);
-          if (s.havePrevious) c.previous = gather.gather(before);
-          if (!root) return;
-          c.curve = recorder.curve;
-          if (!writeCheckpoint(dir, c) && !checkpointFailed) {
-            checkpointFailed = true;
-            std::cerr << "cgcm: warning: cannot write " << checkpointPath(dir) << "; the run goes on without\n";
-          }
-        };
-      const solver::StepperState* from = resume ? &resume->stepper : nullptr;
-      const Vector* fromPrevious = resume && resume->stepper.havePrevious ? &previous : nullptr;
-      if (probe) {
-        // A converged step whose gap moved much more than the prescribed displacement left its branch.
-        const Real floor = 0.05 * setup.interaction->potential->r0();
-        stepper.setContinuityCheck([&](const Vector& before, const Vector& after) {
-          const Real du = std::abs(model->load() - lastLoad);
-          return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
-        });
-        stepper.run(u, [&](const solver::StepInfo& info, const Vector& state) {
-          LoadPoint row;
-          row.step = step = info.step;
-          row.newtonIterations = info.newton.iterations;
-          row.fold = info.fold;
-          row.jump = info.jump;
-          row.residual = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
-          row.cutbacks = info.cutbacks;
-          auto p = model->parameters();
-          p[0] = info.load;
-          recorder.record(state, p, row);
-          if (!info.fold) lastLoad = info.load;
-        }, checkpoint, from, fromPrevious);
-      } else {
-        stepper.run(u, [&](const solver::StepInfo& info, const Vector& state) {
-          LoadPoint row;
-          row.step = step = info.step;
-          row.newtonIterations = info.newton.iterations;
-          row.residual = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
-          row.cutbacks = info.cutbacks;
-          auto p = model->parameters();
-          p[0] = info.load;
-          recorder.record(state, p, row);
-        }, checkpoint, from, fromPrevious);
-      }
-      for (const auto& j : stepper.jumps()) result.continuationSteps += j.steps, result.graphRestarts += j.restarts;
-    } else {
-      model->dirichlet().impose(plan.path.path.front(), u);
-      const auto first = newton.solve(u);
-      if (!first.converged)
-        throw NumericalError("no equilibrium at the start of the load path, u = " +
-                             std::to_string(plan.path.path.front()) + ": " + first.failure);
-      LoadPoint row;
-      row.newtonIterations = first.iterations;
-      row.residual = first.residualNorms.back();
-      recorder.record(u, model->parameters(), row);
-      for (std::size_t k = 1; k < plan.path.path.size(); ++k)
-        continueTo(0, plan.path.path[k], plan.path.path, plan.path.initialIncrement);
-    }
-    if (plan.parameter != "u") {
-      std::vector<Real> waypoints{model->parameter(parameterIndex)};
-      waypoints.insert(waypoints.end(), plan.parameterPath.begin(), plan.parameterPath.end());
-      for (std::size_t k = 1; k < waypoints.size(); ++k) {
-        if (waypoints[k] == model->parameter(parameterIndex)) continue;
-        continueTo(parameterIndex, waypoints[k], waypoints,
-                   0.01 * std::abs(waypoints[k] - model->parameter(parameterIndex)));
-      }
-    }
-    result.completed = true;
-  } catch (const NumericalError& e) {
-    result.failure = e.what();
-    if (root) std::cerr << "cgcm: stopped after step " << step << ": " << e.what() << "\n";
-  }
-  result.curve = recorder.curve;
-  result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
-  result.meshSeconds = meshSeconds;
-  result.distributionSeconds = distributionSeconds;
-  {
-    // LOCA does not report its solves (its groups do not log them to NOX's statistics).
-    result.linearSolves = newton.linearSolves().solves;
-    result.krylovIterations = newton.linearSolves().iterations;
-    result.linearSolver = linearSolverType;
-  }
+  // LOCA does not report its solves (its groups do not log them to NOX's statistics).
+  result.linearSolves = newton.linearSolves().solves;
+  result.krylovIterations = newton.linearSolves().iterations;
   const auto graph = problem->graph();  // collective only when it has to be built
-  result.numNodes = numNodes;
-  result.numCells = numCells;
   result.numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
   result.matrixRows = graph->getGlobalNumRows();
   result.matrixEntries = graph->getGlobalNumEntries();
@@ -380,9 +126,135 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     result.volumePairs = o.str();
   }
 
-  // Summary: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
+}
+
+}  // namespace
+
+RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
+                        std::ostream& log, RunMode mode) {
+  const bool root = comm->getRank() == 0;
+  const auto& out = deck.sublist("Output");
+  const std::string dir = out.get<std::string>("Directory");
+  const bool printSteps = out.get<bool>("Print Steps");
+
+  // Build: everything that can be rejected is checked before any work starts.
+  const auto setupStart = std::chrono::steady_clock::now();
+  const ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
+  const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
+  const std::vector<std::string> parameters =
+      setup.interaction ? std::vector<std::string>{"gammaW", "gammaL"} : std::vector<std::string>{};
+  const solver::PathPlan plan(deck.sublist("Loading"), parameters,
+                              setup.interaction ? setup.interaction->potential->r0() : 0.0);
+  auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
+                                                               deck.sublist("Solver").sublist("Linear Solver"));
+  newtonSettings.forceScale = setup.forceScale;
+  const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
+  const int dim = formulationDim(setup.formulation);
+  solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim, Teuchos::null, !setup.interaction);
+  std::optional<Checkpoint> resume;
+  if (mode == RunMode::Restart) {
+    if (!plan.follower().restartable() || plan.parameter() != "u")
+      throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
+                       "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
+    resume = readCheckpoint(dir);
+  }
+  prepareOutput(*comm, deck, dir, mode);
+  const auto distributionStart = std::chrono::steady_clock::now();
+  const Discretization disc = discretize(comm, setup, linearSolverSettings);
+  const double distributionSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - distributionStart).count();
+  const auto numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
+  if (resume && resume->u.size() != numDofs)
+    throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
+                     " unknowns, the deck's problem " + std::to_string(numDofs) +
+                     " (parameters.xml or the mesh changed since)");
+  const auto& model = disc.model;
+  solver::NewtonSolver newton(model, newtonSettings);
+  const auto loca = plan.locaParameters(deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA"));
+  solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
+  std::unique_ptr<ContactProbe> probe;
+  if (setup.model.contact) probe = std::make_unique<ContactProbe>(*setup.model.contact, *disc.mesh, *disc.problem);
+  if (root && printSteps) {
+    log << "cgcm: " << formulationName(setup.formulation) << ", " << setup.numNodes << " nodes, " << setup.numCells
+        << " cells, " << numDofs << " dofs, " << comm->getSize() << " rank(s); " << plan.follower().name()
+        << " control\n";
+    for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
+    log << "cgcm: a state is accepted when |f|_2 <= " << newtonSettings.tolerance() << " (Residual Tolerance "
+        << newtonSettings.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
+  }
+
+  // The initial guess: the prescribed motion of whole bodies at the first u (a restart: the checkpoint's state).
+  Vector u(model->map()), previous(model->map());
+  RootGather gather(disc.dofs->ownedMap());
+  if (resume) {
+    gather.scatter(resume->u, u);
+    if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
+  } else if (!setup.model.initialMotion.empty()) {
+    assembly::DirichletConditions motion(disc.dofs);
+    for (const auto& c : setup.model.initialMotion)
+      motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+    motion.impose(plan.path().path.front(), u);
+  }
+  model->setLoad(resume ? resume->stepper.load : plan.path().path.front());
+  if (plan.usesContinuation()) continuation.validate(u);  // LOCA reads its list: typos stop here
+  if (mode == RunMode::Check) {
+    RunResult checked;
+    checked.completed = true;
+    checked.numNodes = setup.numNodes, checked.numCells = setup.numCells, checked.numDofs = numDofs;
+    return checked;
+  }
+  if (root) {  // the summary says what the run is doing until it ends
+    std::ofstream running(dir + "/summary.txt");
+    running << "running" << (resume ? " (restarted after step " + std::to_string(resume->stepper.step) + ")" : "")
+            << "\n";
+  }
+
+  // Follow and record.
+  Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), model->parameterIndex(plan.parameter()),
+                    printSteps, log, resume ? &*resume : nullptr);
+  Real lastLoad = resume ? resume->lastLoad : plan.path().path.front();  // of the last state that was no fold
+  solver::PathContext context;
+  context.model = model;
+  context.newton = &newton;
+  context.continuation = &continuation;
+  if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(dir, recorder, gather, lastLoad, root);
+  if (resume) context.resume = &resume->stepper;
+  if (resume && resume->stepper.havePrevious) context.resumePrevious = &previous;
+  if (probe) {
+    // A converged step whose gap moved much more than the prescribed displacement left its branch.
+    const Real floor = 0.05 * setup.interaction->potential->r0();
+    context.continuity = [&, floor](const Vector& before, const Vector& after) {
+      const Real du = std::abs(model->load() - lastLoad);
+      return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
+    };
+  }
+  RunResult result;
+  const auto runStart = std::chrono::steady_clock::now();
+  const assembly::AssemblyTimings timingsBefore = disc.problem->timings();
+  try {
+    const auto cost = plan.follow(u, context, [&](const solver::PathState& state) {
+      recorder.record(state);
+      if (!state.fold) lastLoad = state.p[0];
+    });
+    result.continuationSteps = cost.continuationSteps;
+    result.graphRestarts = cost.graphRestarts;
+    result.completed = true;
+  } catch (const NumericalError& e) {
+    result.failure = e.what();
+    if (root) std::cerr << "cgcm: stopped after step " << (recorder.curve.empty() ? 0 : recorder.curve.back().step)
+                        << ": " << e.what() << "\n";
+  }
+  result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+
+  // Summarise: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
+  result.curve = recorder.curve;
+  result.meshSeconds = meshSeconds;
+  result.distributionSeconds = distributionSeconds;
+  result.linearSolver = solver::resolvedLinearSolverType(linearSolverSettings, dim);
+  result.numNodes = setup.numNodes, result.numCells = setup.numCells;
+  measureCost(result, disc, newton, timingsBefore);
   if (root) {
-    writeSummary(dir + "/summary.txt", result, plan.parameter, plan.arcLength, printSteps ? &log : nullptr);
+    writeSummary(dir + "/summary.txt", result, plan, printSteps ? &log : nullptr);
     if (printSteps) log << "cgcm: outputs in " << dir << "/\n";
   }
   return result;

@@ -9,8 +9,9 @@
 
 namespace cgcm::app {
 
-void writeSummary(const std::string& path, const RunResult& result, const std::string& parameter, bool arcLength,
+void writeSummary(const std::string& path, const RunResult& result, const solver::PathPlan& plan,
                   std::ostream* echo) {
+  const std::string& parameter = plan.parameter();
   std::ofstream sum(path);
   auto both = [&](const char* text) {
     sum << text;
@@ -34,7 +35,7 @@ void writeSummary(const std::string& path, const RunResult& result, const std::s
       both(buf);
     }
   if (parameter == "u") {
-    const auto path = arcLength ? displacementControlPath(c) : c;
+    const auto path = plan.follower().tracesUnstableBranches() ? displacementControlPath(c) : c;
     for (const auto& j : jumpsOf(path)) {
       std::snprintf(buf, sizeof buf, "jump under displacement control at u = %.10g: P %.10g -> %.10g, gap %.6g -> %.6g\n",
                     j.from.u, j.from.P, j.to.P, j.from.gap, j.to.gap);

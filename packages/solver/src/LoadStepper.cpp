@@ -24,8 +24,8 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadPathSettings::validParameters() {
              "the continuation parameter)", positive);
   valid->set("Min Increment", 1e-7, "the run stops with an error if a step fails at this increment "
              "(arc-length control: the smallest arclength step)", positive);
-  valid->set("Max Increment", 0.01, "largest increment of u (arc-length control: half the largest arclength step)",
-             positive);
+  valid->set("Max Increment", 0.01,
+             "largest increment of u (arc-length control: the largest arclength step, LOCA's Max Step Size)", positive);
   valid->set("Easy Step Iterations", 4, "the increment grows after a step that needed at most this many "
              "Newton iterations", intAtLeast(1));
   valid->set("Growth Factor", 1.5, "increment growth after an easy step (>= 1)", atLeast(1.0));

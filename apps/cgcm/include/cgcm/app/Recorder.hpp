@@ -12,6 +12,7 @@
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/app/Simulation.hpp"
 #include "cgcm/io/CsvWriter.hpp"
+#include "cgcm/solver/PathFollower.hpp"
 
 namespace cgcm::app {
 
@@ -52,8 +53,8 @@ class Recorder {
   /// Steps in results.e so far (rank 0; 0 without Exodus output).
   int exodusSteps() const { return results_ ? results_->numSteps() : 0; }
 
-  /// Records the state x at parameters p; `row` carries step, flags and solver figures. Collective.
-  void record(const assembly::Vector& x, const std::vector<Real>& p, LoadPoint row);
+  /// Records an accepted state of the path (its step, flags and solver figures with it). Collective.
+  void record(const solver::PathState& state);
 
   std::vector<LoadPoint> curve;
 

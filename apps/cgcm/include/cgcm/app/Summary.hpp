@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cgcm/app/Simulation.hpp"
+#include "cgcm/solver/PathFollower.hpp"
 
 namespace cgcm::app {
 
@@ -13,7 +14,7 @@ namespace cgcm::app {
 /// continuation steps, the Jacobian's size and the wall time split into bulk
 /// assembly, interaction (closest-point search) and linear solves. Each line
 /// also goes to `echo` (if not null) prefixed with "cgcm: ".
-void writeSummary(const std::string& path, const RunResult& result, const std::string& parameter, bool arcLength,
+void writeSummary(const std::string& path, const RunResult& result, const solver::PathPlan& plan,
                   std::ostream* echo);
 
 }  // namespace cgcm::app

@@ -1,0 +1,134 @@
+#pragma once
+// Path control as a strategy: the deck's Loading sublist names how the load
+// path is followed (Loading/Control: a registry of path followers, each one
+// class), along the Approach Path in u, and then, optionally, by arc-length
+// continuation in another parameter of the model (Continuation Parameter:
+// gammaW, gammaL). The caller sees accepted states through one observer,
+// whichever control reached them.
+#include <Teuchos_ParameterList.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cgcm/solver/Continuation.hpp"
+#include "cgcm/solver/LoadStepper.hpp"
+#include "cgcm/solver/ModelEvaluator.hpp"
+#include "cgcm/solver/NewtonSolver.hpp"
+
+namespace cgcm::solver {
+
+/// An accepted state of the path.
+struct PathState {
+  const Vector* x = nullptr;  ///< the state
+  std::vector<Real> p;        ///< every entry of p(0) at the state (p[0] = u)
+  int step = 0;               ///< its row: accepted states before it along the whole path
+  int iterations = 0;         ///< Newton iterations of its solve (or corrector)
+  Real residual = 0.0;        ///< |f|_2 of the accepted state (force units)
+  int cutbacks = 0;           ///< failed attempts before it (displacement control)
+  bool stable = true;         ///< under control of the continuation parameter
+  bool fold = false;          ///< a located fold (turning point of the path)
+  bool jump = false;          ///< reached by a jump from a fold (displacement control)
+};
+
+/// What a path costs besides Newton's solves.
+struct PathCost {
+  int continuationSteps = 0;  ///< arc-length steps (arc-length control, jumps, parameter continuation)
+  int graphRestarts = 0;      ///< continuation restarts after graph rebuilds
+};
+
+/// What followers share with the caller: the solvers, and hooks for a run that
+/// is checkpointed (displacement control) or watches for a state that left its branch.
+struct PathContext {
+  Teuchos::RCP<ModelEvaluator> model;
+  NewtonSolver* newton = nullptr;
+  Continuation* continuation = nullptr;
+  LoadStepper::ContinuityCheck continuity;  ///< may be empty
+  LoadStepper::CheckpointSink checkpoint;   ///< may be empty
+  const StepperState* resume = nullptr;     ///< a restart: where the interrupted run stood
+  const Vector* resumePrevious = nullptr;   ///< and the state before it (resume->havePrevious)
+};
+
+class PathPlan;
+
+/// One way of following the Approach Path in u.
+class PathFollower {
+ public:
+  using Observer = std::function<void(const PathState&)>;
+  virtual ~PathFollower() = default;
+  /// Its Loading/Control value.
+  virtual std::string name() const = 0;
+  /// Its curve holds the unstable branches between folds (arc-length); the
+  /// path of a rigid loading device is then derived from it. Otherwise the
+  /// curve is that path already (stable branches joined by jumps).
+  virtual bool tracesUnstableBranches() const = 0;
+  /// A killed run can go on from its last accepted state (checkpoint.bin).
+  virtual bool restartable() const = 0;
+  /// LOCA is used along the path in u (its parameters are then checked before the run).
+  virtual bool usesContinuation() const = 0;
+  /// Follows the plan's Approach Path from u (the initial guess at its first
+  /// value; a restart: the accepted state of context.resume), calling
+  /// `observer` after every accepted state. Throws NumericalError, naming
+  /// where and why, if the path cannot be followed (every state observed so far stays valid).
+  virtual PathCost follow(Vector& u, const PathPlan& plan, PathContext& context, const Observer& observer) const = 0;
+};
+
+/// A Loading/Control value: its follower.
+struct PathControlEntry {
+  const char* deckName;
+  const char* description;  ///< for the deck's help
+  std::unique_ptr<PathFollower> (*make)();
+};
+const std::vector<PathControlEntry>& pathControlRegistry();
+
+/// The deck's Loading sublist, read and checked: the follower, the path in u,
+/// the parameter continuation after it.
+class PathPlan {
+ public:
+  /// The Loading sublist: every parameter with its default and help.
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
+  /// The help of the LOCA sublist, with the defaults cgcm gives LOCA.
+  static const char* locaHelp();
+
+  /// From a validated Loading sublist; `parameters`: the names the model can
+  /// continue in besides u, `lengthScale`: the interaction's r0 (a jump relaxes
+  /// in moves of at most a quarter of it; 0: no interaction). Throws InputError
+  /// naming the parameter for a path that cannot be followed.
+  PathPlan(const Teuchos::ParameterList& loading, const std::vector<std::string>& parameters, Real lengthScale);
+
+  const PathFollower& follower() const { return *follower_; }
+  const LoadPathSettings& path() const { return path_; }
+  /// Loading/Continuation Parameter: "u", or the parameter continued in after the Approach Path.
+  const std::string& parameter() const { return parameter_; }
+  /// The run needs LOCA (its list is then checked before any work).
+  bool usesContinuation() const { return follower_->usesContinuation() || parameter_ != "u"; }
+
+  /// The deck's LOCA sublist over the step sizes of this plan, the one home of
+  /// these defaults: Step Size/Min Step Size = Loading/Min Increment, and
+  /// Max Step Size = Loading/Max Increment when the parameter is u.
+  Teuchos::ParameterList locaParameters(const Teuchos::ParameterList& deckLoca) const;
+
+  /// The whole path: the follower along the Approach Path, then continuation
+  /// in the Continuation Parameter through its Parameter Path. Throws
+  /// NumericalError if it stops.
+  PathCost follow(Vector& u, PathContext& context, const PathFollower::Observer& observer) const;
+
+  /// One continuation segment from the converged state u (the model's current
+  /// parameters) to `target` of parameter `index`; u ends on the last point.
+  /// Throws NumericalError if it stops.
+  PathCost continueTo(Vector& u, int index, Real target, const std::vector<Real>& waypoints, Real initialStep,
+                      bool stableStart, PathContext& context, const PathFollower::Observer& observer,
+                      int& step) const;
+
+ private:
+  Real runawayBound(const std::vector<Real>& waypoints, Real direction, bool positive) const;
+
+  std::shared_ptr<const PathFollower> follower_;
+  LoadPathSettings path_;
+  std::string parameter_ = "u";
+  std::vector<Real> parameterPath_;  ///< waypoints of the parameter (not u)
+  std::vector<Real> bounds_;         ///< {lower, upper} or empty
+};
+
+}  // namespace cgcm::solver

@@ -1,0 +1,244 @@
+#include "cgcm/solver/PathFollower.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
+
+namespace cgcm::solver {
+
+namespace {
+
+// Steps in u; at a fold the state jumps to the far stable branch at the same
+// u, as under a rigid loading device (LoadStepper).
+class DisplacementControl final : public PathFollower {
+ public:
+  std::string name() const override { return "displacement"; }
+  bool tracesUnstableBranches() const override { return false; }
+  bool restartable() const override { return true; }
+  bool usesContinuation() const override { return false; }
+
+  PathCost follow(Vector& u, const PathPlan& plan, PathContext& c, const Observer& observer) const override {
+    LoadStepper stepper(c.model, *c.newton, plan.path(), c.continuation);
+    if (c.continuity) stepper.setContinuityCheck(c.continuity);
+    stepper.run(u, [&](const StepInfo& info, const Vector& state) {
+      PathState s;
+      s.x = &state;
+      s.p = c.model->parameters();
+      s.p[0] = info.load;
+      s.step = info.step;
+      s.iterations = info.newton.iterations;
+      s.residual = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();
+      s.cutbacks = info.cutbacks;
+      s.fold = info.fold;
+      s.jump = info.jump;
+      observer(s);
+    }, c.checkpoint, c.resume, c.resumePrevious);
+    PathCost cost;
+    for (const auto& j : stepper.jumps()) cost.continuationSteps += j.steps, cost.graphRestarts += j.restarts;
+    return cost;
+  }
+};
+
+// LOCA pseudo-arclength continuation in u through the folds, the unstable
+// branches included.
+class ArcLengthControl final : public PathFollower {
+ public:
+  std::string name() const override { return "arc-length"; }
+  bool tracesUnstableBranches() const override { return true; }
+  bool restartable() const override { return false; }
+  bool usesContinuation() const override { return true; }
+
+  PathCost follow(Vector& u, const PathPlan& plan, PathContext& c, const Observer& observer) const override {
+    const auto& waypoints = plan.path().path;
+    c.model->dirichlet().impose(waypoints.front(), u);
+    const auto first = c.newton->solve(u);
+    if (!first.converged)
+      throw NumericalError("no equilibrium at the start of the load path, u = " + std::to_string(waypoints.front()) +
+                           ": " + first.failure);
+    PathState start;
+    start.x = &u;
+    start.p = c.model->parameters();
+    start.iterations = first.iterations;
+    start.residual = first.residualNorms.back();
+    observer(start);
+    PathCost cost;
+    int step = 0;
+    bool stable = true;
+    const auto track = [&](const PathState& s) {
+      stable = s.stable;
+      observer(s);
+    };
+    for (std::size_t k = 1; k < waypoints.size(); ++k) {
+      const auto segment = plan.continueTo(u, 0, waypoints[k], waypoints, plan.path().initialIncrement, stable, c,
+                                           track, step);
+      cost.continuationSteps += segment.continuationSteps;
+      cost.graphRestarts += segment.graphRestarts;
+    }
+    return cost;
+  }
+};
+
+}  // namespace
+
+const std::vector<PathControlEntry>& pathControlRegistry() {
+  static const std::vector<PathControlEntry> registry = {
+      {"displacement",
+       "steps in u along the Approach Path; at a fold (jump-to-contact, jump-off-contact) the state jumps to the "
+       "far stable branch at the same u (found by continuation), as under a rigid loading device",
+       [] { return std::unique_ptr<PathFollower>(new DisplacementControl); }},
+      {"arc-length",
+       "LOCA pseudo-arclength continuation through the folds, the unstable branch included (rows with stable = 0)",
+       [] { return std::unique_ptr<PathFollower>(new ArcLengthControl); }},
+  };
+  return registry;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> PathPlan::validParameters() {
+  static const Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto loading = Teuchos::rcp(new Teuchos::ParameterList("Loading"));
+    std::vector<std::string> names;
+    std::string help;
+    for (const auto& e : pathControlRegistry()) {
+      names.push_back(e.deckName);
+      help += std::string(help.empty() ? "" : " ") + "\"" + e.deckName + "\": " + e.description + ".";
+    }
+    help.pop_back();  // the last description's full stop
+    loading->set("Control", names.front(), help, validators::choices(names));
+    loading->setParameters(*LoadPathSettings::validParameters());
+    loading->set("Continuation Parameter", "u",
+                 "\"u\": the path is the Approach Path. \"gammaW\" or \"gammaL\": after the Approach Path (at the "
+                 "deck's gammas), arc-length continuation in that parameter along the Parameter Path at the last u",
+                 validators::choices({"u", "gammaW", "gammaL"}));
+    loading->set("Parameter Path", Teuchos::Array<double>{},
+                 "waypoints of the Continuation Parameter when it is not u, e.g. {100, 20}: from the deck's value "
+                 "through these; empty for u");
+    loading->set("Parameter Bounds", Teuchos::Array<double>{},
+                 "{lower, upper}: the continuation stops as failed if its parameter leaves this range (arc-length "
+                 "control and jumps; default: the path's range widened by twice its span on each side)");
+    return Teuchos::RCP<const Teuchos::ParameterList>(loading);
+  }();
+  return valid;
+}
+
+const char* PathPlan::locaHelp() {
+  return "passed to LOCA's stepper (sublists Stepper, Predictor, Step Size, Bifurcation, ... with LOCA's own "
+         "names), over cgcm's defaults: Stepper/Continuation Method = Arc Length, Max Steps = 2000; "
+         "Predictor/Method = Tangent; Step Size/Method = Adaptive, Min Step Size = Loading/Min Increment, Max "
+         "Step Size = Loading/Max Increment (continuation in u), the first step's change of the parameter "
+         "Loading/Initial Increment (in u) or 1 % of the way to the first Parameter Path waypoint. cgcm sets "
+         "Stepper/Continuation Parameter, Initial Value, Min and Max Value and Max Nonlinear Iterations itself; "
+         "names LOCA does not read are rejected before the run";
+}
+
+PathPlan::PathPlan(const Teuchos::ParameterList& loading, const std::vector<std::string>& parameters,
+                   Real lengthScale) {
+  const std::string control = loading.get<std::string>("Control");
+  for (const auto& e : pathControlRegistry())
+    if (control == e.deckName) follower_ = e.make();
+  if (!follower_) throw InputError("Loading/Control = \"" + control + "\": not a path control");
+  path_ = LoadPathSettings::fromParameters(loading);
+  // A jump relaxes in moves of at most a quarter of the interaction length, so that
+  // no iterate skips the equilibrium spacing or pushes a surface through another.
+  if (lengthScale > 0.0) path_.relaxation.maxIncrement = 0.25 * lengthScale;
+  parameter_ = loading.get<std::string>("Continuation Parameter");
+  const auto& pp = loading.get<Teuchos::Array<double>>("Parameter Path");
+  parameterPath_.assign(pp.begin(), pp.end());
+  const auto& b = loading.get<Teuchos::Array<double>>("Parameter Bounds");
+  bounds_.assign(b.begin(), b.end());
+  if (parameter_ != "u" && std::find(parameters.begin(), parameters.end(), parameter_) == parameters.end())
+    throw InputError("Loading/Continuation Parameter = \"" + parameter_ +
+                     "\" needs an interaction between bodies (a sphere geometry); allowed here: \"u\"");
+  if (parameter_ == "u" && !parameterPath_.empty())
+    throw InputError("Loading/Parameter Path: only with a Continuation Parameter other than \"u\"; the path in u "
+                     "is Loading/Approach Path");
+  if (parameter_ != "u" && parameterPath_.empty())
+    throw InputError("Loading/Parameter Path: give the waypoints of " + parameter_ + " (e.g. {100, 20})");
+  for (std::size_t i = 0; i < parameterPath_.size(); ++i)
+    if (!std::isfinite(parameterPath_[i]) || !(parameterPath_[i] > 0.0))
+      throw InputError("Loading/Parameter Path: waypoint " + std::to_string(i) + " = " +
+                       std::to_string(parameterPath_[i]) + "; " + parameter_ + " must be finite and > 0");
+  if (!bounds_.empty()) {
+    if (bounds_.size() != 2 || !(bounds_[0] < bounds_[1]) || !std::isfinite(bounds_[0]) || !std::isfinite(bounds_[1]))
+      throw InputError("Loading/Parameter Bounds: give {lower, upper} with lower < upper (finite), or leave it empty");
+    for (Real v : parameter_ == "u" ? path_.path : parameterPath_)
+      if (v < bounds_[0] || v > bounds_[1])
+        throw InputError("Loading/Parameter Bounds: the path value " + std::to_string(v) + " lies outside {" +
+                         std::to_string(bounds_[0]) + ", " + std::to_string(bounds_[1]) + "}");
+  }
+}
+
+Teuchos::ParameterList PathPlan::locaParameters(const Teuchos::ParameterList& deckLoca) const {
+  Teuchos::ParameterList loca = deckLoca;
+  auto& step = loca.sublist("Step Size");
+  if (!step.isParameter("Min Step Size")) step.set("Min Step Size", path_.minIncrement);
+  if (!step.isParameter("Max Step Size") && parameter_ == "u") step.set("Max Step Size", path_.maxIncrement);
+  return loca;
+}
+
+// The bound beyond which a continuation segment counts as run away: the deck's
+// bounds, or the path's range widened by twice its span (positive parameters
+// stay above a thousandth of the path's smallest value).
+Real PathPlan::runawayBound(const std::vector<Real>& waypoints, Real direction, bool positive) const {
+  if (!bounds_.empty()) return direction > 0 ? bounds_[0] : bounds_[1];
+  const auto [lo, hi] = std::minmax_element(waypoints.begin(), waypoints.end());
+  const Real span = *hi - *lo;
+  if (direction > 0) return positive ? std::max(*lo - 2.0 * span, 1e-3 * *lo) : *lo - 2.0 * span;
+  return *hi + 2.0 * span;
+}
+
+PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vector<Real>& waypoints,
+                              Real initialStep, bool stableStart, PathContext& c,
+                              const PathFollower::Observer& observer, int& step) const {
+  const Real from = c.model->parameter(index);
+  ContinuationSegment segment;
+  segment.parameter = index;
+  segment.target = target;
+  segment.direction = target > from ? 1.0 : -1.0;
+  segment.bound = runawayBound(waypoints, segment.direction, index > 0);
+  segment.initialStep = std::min(initialStep, std::abs(target - from));
+  segment.stableStart = stableStart;
+  const auto r = c.continuation->run(u, segment, [&](const PathPoint& pt) {
+    PathState s;
+    s.x = pt.x.get();
+    s.p = pt.p;
+    s.step = ++step;
+    s.iterations = pt.iterations;
+    s.residual = pt.residual;
+    s.stable = pt.stable;
+    s.fold = pt.fold;
+    observer(s);
+  });
+  PathCost cost{r.steps, r.restarts};
+  if (!r.reached) throw NumericalError(r.failure);
+  u.assign(*r.last.x);
+  for (std::size_t k = 0; k < r.last.p.size(); ++k) c.model->setParameter(int(k), r.last.p[k]);
+  return cost;
+}
+
+PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observer& observer) const {
+  int step = c.resume ? c.resume->step : 0;
+  bool stable = true;
+  const auto track = [&](const PathState& s) {
+    step = s.step;
+    stable = s.stable;
+    observer(s);
+  };
+  PathCost cost = follower_->follow(u, *this, c, track);
+  if (parameter_ == "u") return cost;
+  const int index = c.model->parameterIndex(parameter_);
+  std::vector<Real> waypoints{c.model->parameter(index)};
+  waypoints.insert(waypoints.end(), parameterPath_.begin(), parameterPath_.end());
+  for (std::size_t k = 1; k < waypoints.size(); ++k) {
+    const Real now = c.model->parameter(index);
+    if (waypoints[k] == now) continue;
+    const auto segment =
+        continueTo(u, index, waypoints[k], waypoints, 0.01 * std::abs(waypoints[k] - now), stable, c, track, step);
+    cost.continuationSteps += segment.continuationSteps;
+    cost.graphRestarts += segment.graphRestarts;
+  }
+  return cost;
+}
+
+}  // namespace cgcm::solver
