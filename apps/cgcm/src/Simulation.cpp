@@ -128,6 +128,82 @@ void measureCost(RunResult& result, const Discretization& disc, const solver::Ne
 
 }
 
+// The deck's Loading sublist for this problem: gammaW and gammaL can be continued in when the bodies interact.
+solver::PathPlan planOf(const Teuchos::ParameterList& deck, const ProblemSetup& setup) {
+  if (!setup.interaction) return solver::PathPlan(deck.sublist("Loading"), {}, 0.0);
+  return solver::PathPlan(deck.sublist("Loading"), {"gammaW", "gammaL"}, setup.interaction->potential->r0());
+}
+
+// Solver/Newton with the problem's force scale.
+solver::NewtonSettings newtonSettingsOf(const Teuchos::ParameterList& deck, const ProblemSetup& setup) {
+  auto settings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
+                                                         deck.sublist("Solver").sublist("Linear Solver"));
+  settings.forceScale = setup.forceScale;
+  return settings;
+}
+
+// --restart: the checkpoint of a run the plan can continue.
+std::optional<Checkpoint> resumeOf(RunMode mode, const solver::PathPlan& plan, const std::string& dir) {
+  if (mode != RunMode::Restart) return std::nullopt;
+  if (!plan.follower().restartable() || plan.parameter() != "u")
+    throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
+                     "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
+  return readCheckpoint(dir);
+}
+
+// The solvers the path needs, and where a restart resumes.
+solver::PathContext pathContext(const Discretization& disc, solver::NewtonSolver& newton,
+                                solver::Continuation& continuation, const std::optional<Checkpoint>& resume,
+                                const Vector& previous) {
+  solver::PathContext context;
+  context.model = disc.model;
+  context.newton = &newton;
+  context.continuation = &continuation;
+  if (resume) context.resume = &resume->stepper;
+  if (resume && resume->stepper.havePrevious) context.resumePrevious = &previous;
+  return context;
+}
+
+// A converged step whose gap moved much more than the prescribed displacement
+// (since `lastLoad`, the last state that was no fold) left its branch.
+solver::LoadStepper::ContinuityCheck continuityCheck(const ContactProbe& probe, const solver::ModelEvaluator& model,
+                                                     const Real& lastLoad, Real floor) {
+  return [&probe, &model, &lastLoad, floor](const Vector& before, const Vector& after) {
+    const Real du = std::abs(model.load() - lastLoad);
+    return std::abs(probe.gap(after) - probe.gap(before)) <= std::max(5.0 * du, floor);
+  };
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The run's first lines: the problem's size, the control, the set-up's report, the convergence test.
+void logStart(std::ostream& log, const ProblemSetup& setup, const solver::PathPlan& plan, long numDofs, int ranks,
+              const solver::NewtonSettings& newton) {
+  log << "cgcm: " << formulationName(setup.formulation) << ", " << setup.numNodes << " nodes, " << setup.numCells
+      << " cells, " << numDofs << " dofs, " << ranks << " rank(s); " << plan.follower().name() << " control\n";
+  for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
+  log << "cgcm: a state is accepted when |f|_2 <= " << newton.tolerance() << " (Residual Tolerance "
+      << newton.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
+}
+
+// The initial guess: the prescribed motion of whole bodies at the first u (a
+// restart: the checkpoint's state, and the one before it in `previous`).
+void initialGuess(const ProblemSetup& setup, const Discretization& disc, const solver::PathPlan& plan,
+                  const Checkpoint* resume, RootGather& gather, Vector& u, Vector& previous) {
+  if (resume) {
+    gather.scatter(resume->u, u);
+    if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
+  } else if (!setup.model.initialMotion.empty()) {
+    assembly::DirichletConditions motion(disc.dofs);
+    for (const auto& c : setup.model.initialMotion)
+      motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+    motion.impose(plan.path().path.front(), u);
+  }
+  disc.model->setLoad(resume ? resume->stepper.load : plan.path().path.front());
+}
+
 }  // namespace
 
 RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
@@ -140,31 +216,19 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Build: everything that can be rejected is checked before any work starts.
   const auto setupStart = std::chrono::steady_clock::now();
   const ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
-  const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
-  const std::vector<std::string> parameters =
-      setup.interaction ? std::vector<std::string>{"gammaW", "gammaL"} : std::vector<std::string>{};
-  const solver::PathPlan plan(deck.sublist("Loading"), parameters,
-                              setup.interaction ? setup.interaction->potential->r0() : 0.0);
-  auto newtonSettings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
-                                                               deck.sublist("Solver").sublist("Linear Solver"));
-  newtonSettings.forceScale = setup.forceScale;
+  const double meshSeconds = secondsSince(setupStart);
+  const solver::PathPlan plan = planOf(deck, setup);
+  const solver::NewtonSettings newtonSettings = newtonSettingsOf(deck, setup);
   const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
   const int dim = formulationDim(setup.formulation);
   solver::buildLinearSolver(linearSolverSettings, comm->getSize(), dim, Teuchos::null, !setup.interaction);
-  std::optional<Checkpoint> resume;
-  if (mode == RunMode::Restart) {
-    if (!plan.follower().restartable() || plan.parameter() != "u")
-      throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
-                       "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
-    resume = readCheckpoint(dir);
-  }
+  const std::optional<Checkpoint> resume = resumeOf(mode, plan, dir);
   prepareOutput(*comm, deck, dir, mode);
   const auto distributionStart = std::chrono::steady_clock::now();
   const Discretization disc = discretize(comm, setup, linearSolverSettings);
-  const double distributionSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - distributionStart).count();
-  const auto numDofs = disc.dofs->ownedMap()->getGlobalNumElements();
-  if (resume && resume->u.size() != numDofs)
+  const double distributionSeconds = secondsSince(distributionStart);
+  const long numDofs = long(disc.dofs->ownedMap()->getGlobalNumElements());
+  if (resume && long(resume->u.size()) != numDofs)
     throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
                      " unknowns, the deck's problem " + std::to_string(numDofs) +
                      " (parameters.xml or the mesh changed since)");
@@ -174,61 +238,24 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
   std::unique_ptr<ContactProbe> probe;
   if (setup.model.contact) probe = std::make_unique<ContactProbe>(*setup.model.contact, *disc.mesh, *disc.problem);
-  if (root && printSteps) {
-    log << "cgcm: " << formulationName(setup.formulation) << ", " << setup.numNodes << " nodes, " << setup.numCells
-        << " cells, " << numDofs << " dofs, " << comm->getSize() << " rank(s); " << plan.follower().name()
-        << " control\n";
-    for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
-    log << "cgcm: a state is accepted when |f|_2 <= " << newtonSettings.tolerance() << " (Residual Tolerance "
-        << newtonSettings.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
-  }
-
-  // The initial guess: the prescribed motion of whole bodies at the first u (a restart: the checkpoint's state).
+  if (root && printSteps) logStart(log, setup, plan, numDofs, comm->getSize(), newtonSettings);
   Vector u(model->map()), previous(model->map());
   RootGather gather(disc.dofs->ownedMap());
-  if (resume) {
-    gather.scatter(resume->u, u);
-    if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
-  } else if (!setup.model.initialMotion.empty()) {
-    assembly::DirichletConditions motion(disc.dofs);
-    for (const auto& c : setup.model.initialMotion)
-      motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-    motion.impose(plan.path().path.front(), u);
-  }
-  model->setLoad(resume ? resume->stepper.load : plan.path().path.front());
+  initialGuess(setup, disc, plan, resume ? &*resume : nullptr, gather, u, previous);
   if (plan.usesContinuation()) continuation.validate(u);  // LOCA reads its list: typos stop here
-  if (mode == RunMode::Check) {
-    RunResult checked;
-    checked.completed = true;
-    checked.numNodes = setup.numNodes, checked.numCells = setup.numCells, checked.numDofs = numDofs;
-    return checked;
-  }
-  if (root) {  // the summary says what the run is doing until it ends
-    std::ofstream running(dir + "/summary.txt");
-    running << "running" << (resume ? " (restarted after step " + std::to_string(resume->stepper.step) + ")" : "")
-            << "\n";
-  }
+  RunResult result;
+  result.numNodes = setup.numNodes, result.numCells = setup.numCells, result.numDofs = std::size_t(numDofs);
+  if (mode == RunMode::Check) return result.completed = true, result;
+  if (root) std::ofstream(dir + "/summary.txt") << "running" << (resume ? " (restarted after step " +
+                                                   std::to_string(resume->stepper.step) + ")" : "") << "\n";
 
-  // Follow and record.
+  // Follow the path, recording every accepted state (a checkpoint after each, under displacement control).
   Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), model->parameterIndex(plan.parameter()),
                     printSteps, log, resume ? &*resume : nullptr);
   Real lastLoad = resume ? resume->lastLoad : plan.path().path.front();  // of the last state that was no fold
-  solver::PathContext context;
-  context.model = model;
-  context.newton = &newton;
-  context.continuation = &continuation;
+  solver::PathContext context = pathContext(disc, newton, continuation, resume, previous);
   if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(dir, recorder, gather, lastLoad, root);
-  if (resume) context.resume = &resume->stepper;
-  if (resume && resume->stepper.havePrevious) context.resumePrevious = &previous;
-  if (probe) {
-    // A converged step whose gap moved much more than the prescribed displacement left its branch.
-    const Real floor = 0.05 * setup.interaction->potential->r0();
-    context.continuity = [&, floor](const Vector& before, const Vector& after) {
-      const Real du = std::abs(model->load() - lastLoad);
-      return std::abs(probe->gap(after) - probe->gap(before)) <= std::max(5.0 * du, floor);
-    };
-  }
-  RunResult result;
+  if (probe) context.continuity = continuityCheck(*probe, *model, lastLoad, 0.05 * setup.interaction->potential->r0());
   const auto runStart = std::chrono::steady_clock::now();
   const assembly::AssemblyTimings timingsBefore = disc.problem->timings();
   try {
@@ -236,27 +263,23 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
       recorder.record(state);
       if (!state.fold) lastLoad = state.p[0];
     });
-    result.continuationSteps = cost.continuationSteps;
-    result.graphRestarts = cost.graphRestarts;
+    result.continuationSteps = cost.continuationSteps, result.graphRestarts = cost.graphRestarts;
     result.completed = true;
   } catch (const NumericalError& e) {
     result.failure = e.what();
-    if (root) std::cerr << "cgcm: stopped after step " << (recorder.curve.empty() ? 0 : recorder.curve.back().step)
-                        << ": " << e.what() << "\n";
+    if (root)
+      std::cerr << "cgcm: stopped after step " << (recorder.curve.empty() ? 0 : recorder.curve.back().step) << ": "
+                << e.what() << "\n";
   }
-  result.pathSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+  result.pathSeconds = secondsSince(runStart);
 
   // Summarise: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
   result.curve = recorder.curve;
-  result.meshSeconds = meshSeconds;
-  result.distributionSeconds = distributionSeconds;
+  result.meshSeconds = meshSeconds, result.distributionSeconds = distributionSeconds;
   result.linearSolver = solver::resolvedLinearSolverType(linearSolverSettings, dim);
-  result.numNodes = setup.numNodes, result.numCells = setup.numCells;
   measureCost(result, disc, newton, timingsBefore);
-  if (root) {
-    writeSummary(dir + "/summary.txt", result, plan, printSteps ? &log : nullptr);
-    if (printSteps) log << "cgcm: outputs in " << dir << "/\n";
-  }
+  if (root) writeSummary(dir + "/summary.txt", result, plan, printSteps ? &log : nullptr);
+  if (root && printSteps) log << "cgcm: outputs in " << dir << "/\n";
   return result;
 }
 

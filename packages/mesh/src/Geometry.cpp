@@ -102,6 +102,25 @@ Real reducedRadius(const ParameterList& g) {
 
 namespace {
 
+// P means the force on the whole body in every formulation: a model that is a
+// part of it, cut by symmetry planes across the drive (3D: x = 0, y = 0; plane
+// strain: the symmetry line x = 0, "axis" or "symmetry x"), reports 2 x the
+// resultant per plane, and says so. In axisymmetry forces are ring totals already.
+// `mirrored`: the planes the mesh was mirrored in (Geometry/Mirror Planes), no cuts any more.
+void reportWholeBody(Model& s, Formulation formulation, const std::string& mirrored = "") {
+  std::vector<const char*> sets;
+  if (formulation == Formulation::ThreeD) sets = {"symmetry x", "symmetry y"};
+  if (formulation == Formulation::PlaneStrain && mirrored.find('x') == std::string::npos) sets = {"axis", "symmetry x"};
+  std::string planes;
+  for (const char* set : sets)
+    if (s.mesh->nodeSets.count(set)) s.force.scale *= 2.0, planes += std::string(planes.empty() ? "" : ", ") + set;
+  if (s.force.scale != 1.0)
+    s.report.push_back("P = " + std::to_string(int(s.force.scale)) + " x the resultant on \"" + s.force.nodeSet +
+                       "\": the force on the whole body of the mesh's symmetry planes (" + planes + ")" +
+                       (formulation == Formulation::PlaneStrain ? ", per unit thickness" : ""));
+  if (s.balance) s.balance->scale = s.force.scale;
+}
+
 // Sphere (radius R0, apex at the equilibrium gap above y = 0) over a half-space
 // block or a second sphere; u moves the sphere's equator plane down.
 void buildSphereContact(const ParameterList& g, Formulation formulation, Real contactDistance, Model& s) {
@@ -157,6 +176,7 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, Real co
   s.initialMotion = {{"upper body", 1, 0.0, -1.0}};  // the sphere starts translated rigidly
   s.balance = ForceResponse{"lower equator", 1, 1.0};
   s.contact = ContactGeometry{"apex", "lower apex", 0, 1, rS0};
+  reportWholeBody(s, formulation);
 }
 
 // Number overrides of a .geo: every entry of Geometry/Mesh Numbers, a number.
@@ -287,17 +307,8 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, Real contact
   }
   s.force = {"driven", vertical, drive};  // P > 0: compressive
   s.force.direction = d;
-  if (dim == 3) {
-    // a quarter or half model: P is the force on the whole body
-    std::string planes;
-    for (const char* set : {"symmetry x", "symmetry y"})
-      if (m->nodeSets.count(set)) s.force.scale *= 2.0, planes += std::string(planes.empty() ? "" : ", ") + set;
-    if (s.force.scale != 1.0)
-      s.report.push_back("P = " + std::to_string(int(s.force.scale)) +
-                         " x the resultant on \"driven\": the force on the whole body of the mesh's symmetry planes (" +
-                         planes + ")");
-  }
-  if (s.balance) s.balance->scale = s.force.scale;
+  s.mesh = m;
+  reportWholeBody(s, formulation, mirrored);
   if (m->nodeSets.count("fixed"))
     for (int i = 0; i < dim; ++i) s.conditions.push_back({"fixed", i, 0.0, 0.0});
   if (m->nodeSets.count("axis")) s.conditions.push_back({"axis", 0, 0.0, 0.0});
@@ -305,7 +316,6 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, Real contact
     const std::string set = std::string("symmetry ") + "xyz"[i];
     if (m->nodeSets.count(set)) s.conditions.push_back({set, i, 0.0, 0.0});
   }
-  s.mesh = m;
 }
 
 // Method 1 integrates over the cells the mesh has: a symmetry plane (or, in

@@ -1,0 +1,158 @@
+// The Interaction sublist belongs to the interaction package: the three
+// parameterisations give one interaction, bad combinations are refused with
+// the parameter named, the interaction it creates is the method asked for,
+// and gammaW and gammaL reach it through the one Interaction interface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/InteractionSetup.hpp"
+#include "cgcm/io/Deck.hpp"
+#include "cgcm/mesh/Geometry.hpp"
+
+using namespace cgcm;
+using namespace cgcm::interaction;
+
+namespace {
+
+const ReferenceScales kScales{1.0, 1.0, 0.2, 1.0};
+
+InteractionSetup setUp(Teuchos::ParameterList list, Formulation f = Formulation::Axisymmetric) {
+  io::validateDeck(list, *validParameters(), "Interaction/");
+  return fromParameters(list, kScales, f);
+}
+
+std::string refusal(const Teuchos::ParameterList& list) {
+  try {
+    setUp(list);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+mesh::Model benchmark(Formulation f, Real contactDistance) {
+  Teuchos::ParameterList g;
+  io::validateDeck(g, *mesh::validParameters(), "Geometry/");
+  return mesh::buildModel(g, f, contactDistance);
+}
+
+TEST(InteractionSetup, TheThreeParameterisationsGiveOneInteraction) {
+  Teuchos::ParameterList plain;
+  plain.set("gammaL", 50.0);
+  plain.set("gammaW", 200.0);
+  const auto a = setUp(plain);
+  Teuchos::ParameterList barred;  // the literal reading: gammaL = gammaL bar / (3/4)^(1/6), gammaW = gammaW bar / sqrt 3
+  barred.set("gammaL bar", 50.0 * std::pow(0.75, 1.0 / 6.0));
+  barred.set("gammaW bar", 200.0 * std::sqrt(3.0));
+  const auto b = setUp(barred);
+  Teuchos::ParameterList physical;  // r0 = R0 / gammaL, epsilon = Y gammaL^3 / (gammaW R0^3 beta0^2)
+  physical.set("r0", 1.0 / 50.0);
+  physical.set("epsilon", 50.0 * 50.0 * 50.0 / 200.0);
+  const auto c = setUp(physical);
+  for (const auto* s : {&b, &c}) {
+    EXPECT_NEAR(s->gammaL, 50.0, 1e-12);
+    EXPECT_NEAR(s->gammaW, 200.0, 1e-10);
+    EXPECT_NEAR(s->potential->r0(), a.potential->r0(), 1e-15);
+    EXPECT_NEAR(s->potential->epsilon() / a.potential->epsilon(), 1.0, 1e-13);
+  }
+  // the defaults: Lennard-Jones, Method 3, cutoff 10 r0 with a 20 % taper
+  EXPECT_EQ(a.potential->name(), "lennard-jones");
+  EXPECT_EQ(a.method, Method::HalfSpacePoint);
+  EXPECT_DOUBLE_EQ(a.surfaceOptions.cutoff, 10.0 * a.potential->r0());
+  EXPECT_DOUBLE_EQ(a.surfaceOptions.cutoffTaper, 0.2);
+  EXPECT_EQ(a.surfaceOptions.quadraturePoints, 4);
+  // 3D: 2 points per direction unless given
+  EXPECT_EQ(setUp(plain, Formulation::ThreeD).surfaceOptions.quadraturePoints, 2);
+}
+
+TEST(InteractionSetup, BadCombinationsAreRefusedWithTheParameterNamed) {
+  Teuchos::ParameterList mixed;
+  mixed.set("gammaL", 20.0);
+  mixed.set("r0", 0.05);
+  mixed.set("epsilon", 1.0);
+  EXPECT_NE(refusal(mixed).find("give one of (gammaL, gammaW), (gammaL bar, gammaW bar) or (r0, epsilon)"),
+            std::string::npos);
+  Teuchos::ParameterList half;
+  half.set("r0", 0.05);
+  EXPECT_NE(refusal(half).find("set both r0 and epsilon"), std::string::npos);
+  Teuchos::ParameterList taper;
+  taper.set("Cutoff", 2.5);
+  taper.set("Cutoff Taper", 0.5);
+  EXPECT_NE(refusal(taper).find("Interaction/Cutoff Taper"), std::string::npos);
+  Teuchos::ParameterList orders;
+  orders.set("Method", std::string("volume pair"));
+  orders.set("Volume Quadrature Order", 4);
+  orders.set("Max Volume Quadrature Order", 3);
+  EXPECT_NE(refusal(orders).find("Interaction/Max Volume Quadrature Order = 3 is below"), std::string::npos);
+  Teuchos::ParameterList potential;
+  potential.set("Potential", std::string("coulomb"));
+  EXPECT_NE(refusal(potential).find("Interaction/Potential = \"coulomb\": not a choice"), std::string::npos);
+}
+
+TEST(InteractionSetup, ContactDistanceIsLennardJonesRS0OfTheSameR0ForEveryPotential) {
+  for (const char* name : {"Lennard-Jones", "repulsive", "Morse"}) {
+    Teuchos::ParameterList list;
+    list.set("Potential", std::string(name));  // the deck names
+    const auto s = setUp(list);
+    EXPECT_DOUBLE_EQ(s.contactDistance(), s.potential->r0() / std::pow(15.0, 1.0 / 6.0)) << name;
+  }
+}
+
+TEST(InteractionSetup, CreatesTheMethodAskedForAndScalesItThroughItsParameters) {
+  for (const char* method : {"half-space point", "volume pair"}) {
+    SCOPED_TRACE(method);
+    Teuchos::ParameterList list;
+    list.set("Method", std::string(method));
+    const auto s = setUp(list);
+    const auto model = benchmark(Formulation::Axisymmetric, s.contactDistance());
+    const auto interaction = s.create(*model.mesh);
+    const bool volume = std::string(method) == "volume pair";
+    EXPECT_EQ(dynamic_cast<VolumeInteraction*>(interaction.get()) != nullptr, volume);
+    EXPECT_EQ(dynamic_cast<SurfaceInteraction*>(interaction.get()) != nullptr, !volume);
+    EXPECT_EQ(interaction->numBodies(), 2);
+    const Real cutoff = interaction->cutoff();
+
+    const auto parameters = s.scalarParameters(interaction);
+    ASSERT_EQ(parameters.size(), 2u);
+    EXPECT_EQ(parameters[0].name, "gammaW");
+    EXPECT_EQ(parameters[0].nominal, 200.0);
+    EXPECT_EQ(parameters[1].name, "gammaL");
+    EXPECT_EQ(parameters[1].nominal, 50.0);
+    // gammaW = Y / (beta0^2 r0^3 epsilon) at fixed r0: epsilon, the strength, as 1 / gammaW
+    parameters[0].apply(50.0);
+    EXPECT_DOUBLE_EQ(interaction->strength(), 4.0);
+    EXPECT_DOUBLE_EQ(interaction->lengthScale(), 1.0);
+    // gammaL = R0 / r0: r0, the length scale and the cutoff with it, as 1 / gammaL
+    parameters[1].apply(100.0);
+    EXPECT_DOUBLE_EQ(interaction->lengthScale(), 0.5);
+    EXPECT_NEAR(interaction->cutoff(), 0.5 * cutoff, 1e-15);
+    EXPECT_DOUBLE_EQ(interaction->strength(), 4.0);
+    EXPECT_THROW(parameters[0].apply(0.0), NumericalError);
+    EXPECT_THROW(parameters[1].apply(-1.0), NumericalError);
+  }
+}
+
+TEST(InteractionSetup, Method1RefusesAModelThatIsASymmetricPart) {
+  Teuchos::ParameterList list;
+  list.set("Method", std::string("volume pair"));
+  const auto s = setUp(list);
+  // the built-in half model in plane strain: its axis is a symmetry line
+  const auto half = benchmark(Formulation::PlaneStrain, s.contactDistance());
+  try {
+    s.checkMesh(*half.mesh, Formulation::PlaneStrain);
+    ADD_FAILURE() << "a half model was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"axis (a symmetry line in plane strain)\""), std::string::npos) << e.what();
+  }
+  // in axisymmetry the axis is the axis of revolution: the model is whole
+  EXPECT_NO_THROW(s.checkMesh(*benchmark(Formulation::Axisymmetric, s.contactDistance()).mesh,
+                              Formulation::Axisymmetric));
+  // Method 3 takes a half model
+  Teuchos::ParameterList surface;
+  EXPECT_NO_THROW(setUp(surface).checkMesh(*half.mesh, Formulation::PlaneStrain));
+}
+
+}  // namespace

@@ -1,0 +1,74 @@
+// The Geometry sublist belongs to the mesh package: each built-in geometry is
+// a model with its conditions, responses and force scale; u = 0 puts the
+// interacting surfaces the contact distance apart; a body nothing holds is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cgcm/core/Error.hpp"
+#include "cgcm/io/Deck.hpp"
+#include "cgcm/mesh/Geometry.hpp"
+
+namespace cgcm::mesh {
+namespace {
+
+Model modelOf(Teuchos::ParameterList g, Formulation f, Real contactDistance = 0.01) {
+  io::validateDeck(g, *validParameters(), "Geometry/");
+  return buildModel(g, f, contactDistance);
+}
+
+TEST(Geometry, TheBenchmarkIsTwoInteractingBodiesTheContactDistanceApart) {
+  for (const Formulation f : {Formulation::Axisymmetric, Formulation::PlaneStrain}) {
+    SCOPED_TRACE(formulationName(f));
+    const Real rS0 = 0.0137;
+    const Model m = modelOf(Teuchos::ParameterList(), f, rS0);
+    EXPECT_TRUE(m.interacting);
+    EXPECT_EQ(m.mesh->numBodies, 2);
+    ASSERT_TRUE(m.contact.has_value());
+    const LocalIndex apex = m.mesh->nodeSet(m.contact->upperApex).front();
+    const LocalIndex lower = m.mesh->nodeSet(m.contact->lowerApex).front();
+    EXPECT_NEAR(m.mesh->coord(apex, 1) - m.mesh->coord(lower, 1), rS0, 1e-14);
+    EXPECT_EQ(m.contact->contactDistance, rS0);
+    EXPECT_EQ(m.force.nodeSet, "equator");
+    EXPECT_EQ(m.force.sign, -1.0);  // P > 0 compressive
+    ASSERT_TRUE(m.balance.has_value());
+    EXPECT_EQ(m.referenceArea, 1.0);  // R0^2 (R0 per unit thickness), R0 = 1
+  }
+  Teuchos::ParameterList big;
+  big.set("Sphere Radius", 2.0);
+  EXPECT_EQ(modelOf(big, Formulation::Axisymmetric).referenceArea, 4.0);
+  EXPECT_EQ(modelOf(big, Formulation::PlaneStrain).referenceArea, 2.0);
+  big.set("Type", std::string("sphere on sphere"));
+  big.set("Second Sphere Radius", 6.0);
+  EXPECT_DOUBLE_EQ(reducedRadius(big), 1.5);
+}
+
+TEST(Geometry, ABlockIsStretchedOnRollersAndDoesNotInteract) {
+  Teuchos::ParameterList g;
+  g.set("Type", std::string("block"));
+  g.sublist("Block").set("Length X", 2.0);
+  g.sublist("Block").set("Length Y", 3.0);
+  const Model box = modelOf(g, Formulation::ThreeD);
+  EXPECT_FALSE(box.interacting);
+  EXPECT_EQ(box.referenceArea, 6.0);  // the loaded face z = Lz
+  EXPECT_EQ(box.force.nodeSet, "zmax");
+  EXPECT_EQ(box.conditions.size(), 4u);
+  const Model axi = modelOf(g, Formulation::Axisymmetric);
+  EXPECT_NEAR(axi.referenceArea, kPi * 4.0, 1e-14);
+  g.sublist("Block").set("Loaded Face", std::string("clamped"));
+  EXPECT_EQ(modelOf(g, Formulation::PlaneStrain).conditions.size(), 4u);
+  EXPECT_EQ(modelOf(g, Formulation::ThreeD).conditions.size(), 6u);
+}
+
+TEST(Geometry, TheBuiltInContactGeometriesAreRefusedIn3D) {
+  try {
+    modelOf(Teuchos::ParameterList(), Formulation::ThreeD);
+    ADD_FAILURE() << "a 3D sphere geometry was built";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs a mesh file"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cgcm::mesh
