@@ -88,71 +88,11 @@ void broadcastBytes(const Teuchos::Comm<int>& comm, std::vector<char>& bytes) {
     Teuchos::broadcast(comm, 0, int(std::min(kPiece, size - at)), bytes.data() + at);
 }
 
-void put(core::ByteWriter& out, const mesh::DisplacementCondition& c) {
-  out.put(c.nodeSet);
-  out.put(c.component);
-  out.put(c.offset);
-  out.put(c.scale);
-}
-
-mesh::DisplacementCondition getCondition(core::ByteReader& in) {
-  mesh::DisplacementCondition c;
-  c.nodeSet = in.getString();
-  c.component = in.get<int>();
-  c.offset = in.get<Real>();
-  c.scale = in.get<Real>();
-  return c;
-}
-
-void put(core::ByteWriter& out, const std::vector<mesh::DisplacementCondition>& conditions) {
-  out.put(std::uint64_t(conditions.size()));
-  for (const auto& c : conditions) put(out, c);
-}
-
-std::vector<mesh::DisplacementCondition> getConditions(core::ByteReader& in) {
-  std::vector<mesh::DisplacementCondition> conditions(in.getCount(1));
-  for (auto& c : conditions) c = getCondition(in);
-  return conditions;
-}
-
-void put(core::ByteWriter& out, const mesh::ForceResponse& f) {
-  out.put(f.nodeSet);
-  out.put(f.component);
-  out.put(f.sign);
-  out.put(f.scale);
-  out.put(f.direction);
-}
-
-mesh::ForceResponse getForceResponse(core::ByteReader& in) {
-  mesh::ForceResponse f;
-  f.nodeSet = in.getString();
-  f.component = in.get<int>();
-  f.sign = in.get<Real>();
-  f.scale = in.get<Real>();
-  f.direction = in.getVector<Real>();
-  return f;
-}
-
 // What rank 0's model and mesh add to the deck's set-up, without the mesh: the
 // other ranks make the rest from the deck themselves (setupFromDeck).
 std::vector<char> toBytes(const ProblemSetup& s) {
-  const mesh::Model& m = s.model;
   core::ByteWriter out;
-  put(out, m.conditions);
-  put(out, m.force);
-  put(out, m.initialMotion);
-  out.put(char(m.balance.has_value()));
-  if (m.balance) put(out, *m.balance);
-  out.put(char(m.contact.has_value()));
-  if (const auto& c = m.contact) {
-    out.put(c->upperApex);
-    out.put(c->lowerApex);
-    out.put(c->upperBody);
-    out.put(c->lowerBody);
-    out.put(c->contactDistance);
-  }
-  out.put(m.interacting);
-  out.put(m.referenceArea);
+  mesh::put(out, s.model);
   out.put(s.bodyMaterials);
   out.put(std::uint64_t(s.report.size()));
   for (const auto& line : s.report) out.put(line);
@@ -163,24 +103,8 @@ std::vector<char> toBytes(const ProblemSetup& s) {
 
 ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vector<char>& bytes) {
   core::ByteReader in(bytes);
-  mesh::Model m;
-  m.conditions = getConditions(in);
-  m.force = getForceResponse(in);
-  m.initialMotion = getConditions(in);
-  if (in.get<char>()) m.balance = getForceResponse(in);
-  if (in.get<char>()) {
-    mesh::ContactGeometry c;
-    c.upperApex = in.getString();
-    c.lowerApex = in.getString();
-    c.upperBody = in.get<int>();
-    c.lowerBody = in.get<int>();
-    c.contactDistance = in.get<Real>();
-    m.contact = std::move(c);
-  }
-  m.interacting = in.get<bool>();
-  m.referenceArea = in.get<Real>();
   ProblemSetup s = setupFromDeck(deck);
-  attachModel(s, std::move(m), deck);
+  attachModel(s, mesh::getModel(in), deck);
   s.bodyMaterials = in.getVector<material::NeoHookean>();
   s.report.resize(in.getCount(sizeof(std::uint64_t)));  // rank 0's, the body materials' lines included
   for (auto& line : s.report) line = in.getString();

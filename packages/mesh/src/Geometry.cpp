@@ -17,6 +17,97 @@ namespace cgcm::mesh {
 
 using Teuchos::ParameterList;
 
+namespace {
+
+void put(core::ByteWriter& out, const DisplacementCondition& c) {
+  out.put(c.nodeSet);
+  out.put(c.component);
+  out.put(c.offset);
+  out.put(c.scale);
+}
+
+DisplacementCondition getCondition(core::ByteReader& in) {
+  DisplacementCondition c;
+  c.nodeSet = in.getString();
+  c.component = in.get<int>();
+  c.offset = in.get<Real>();
+  c.scale = in.get<Real>();
+  return c;
+}
+
+void put(core::ByteWriter& out, const std::vector<DisplacementCondition>& conditions) {
+  out.put(std::uint64_t(conditions.size()));
+  for (const auto& c : conditions) put(out, c);
+}
+
+std::vector<DisplacementCondition> getConditions(core::ByteReader& in) {
+  std::vector<DisplacementCondition> conditions(in.getCount(1));
+  for (auto& c : conditions) c = getCondition(in);
+  return conditions;
+}
+
+void put(core::ByteWriter& out, const ForceResponse& f) {
+  out.put(f.nodeSet);
+  out.put(f.component);
+  out.put(f.sign);
+  out.put(f.scale);
+  out.put(f.direction);
+}
+
+ForceResponse getForceResponse(core::ByteReader& in) {
+  ForceResponse f;
+  f.nodeSet = in.getString();
+  f.component = in.get<int>();
+  f.sign = in.get<Real>();
+  f.scale = in.get<Real>();
+  f.direction = in.getVector<Real>();
+  return f;
+}
+
+}  // namespace
+
+void put(core::ByteWriter& out, const Model& m) {
+  put(out, m.conditions);
+  put(out, m.force);
+  put(out, m.initialMotion);
+  out.put(char(m.balance.has_value()));
+  if (m.balance) put(out, *m.balance);
+  out.put(char(m.contact.has_value()));
+  if (const auto& c = m.contact) {
+    out.put(c->upperApex);
+    out.put(c->lowerApex);
+    out.put(c->upperBody);
+    out.put(c->lowerBody);
+    out.put(c->contactDistance);
+  }
+  out.put(m.interacting);
+  out.put(m.referenceArea);
+  out.put(std::uint64_t(m.report.size()));
+  for (const auto& line : m.report) out.put(line);
+}
+
+Model getModel(core::ByteReader& in) {
+  Model m;
+  m.conditions = getConditions(in);
+  m.force = getForceResponse(in);
+  m.initialMotion = getConditions(in);
+  if (in.get<char>()) m.balance = getForceResponse(in);
+  if (in.get<char>()) {
+    ContactGeometry c;
+    c.upperApex = in.getString();
+    c.lowerApex = in.getString();
+    c.upperBody = in.get<int>();
+    c.lowerBody = in.get<int>();
+    c.contactDistance = in.get<Real>();
+    m.contact = std::move(c);
+  }
+  m.interacting = in.get<bool>();
+  m.referenceArea = in.get<Real>();
+  m.report.resize(in.getCount(sizeof(std::uint64_t)));
+  for (auto& line : m.report) line = in.getString();
+  return m;
+}
+
 Teuchos::RCP<const ParameterList> validParameters() {
   using validators::atLeast;
   using validators::between;

@@ -287,6 +287,23 @@ class PathStepper : public LOCA::Stepper {
   Teuchos::RCP<LOCA::MultiContinuation::ExtendedVector> tangent_;  ///< at the last converged point
 };
 
+namespace {
+
+// `to` gets the entries of `from` (sublists merged) marked as not read: validate() tells the names LOCA
+// reads by their use flags, which an earlier reader of the deck (its echo to parameters.xml) may have set.
+void setUnread(Teuchos::ParameterList& to, const Teuchos::ParameterList& from) {
+  for (auto it = from.begin(); it != from.end(); ++it) {
+    const std::string& name = from.name(it);
+    const Teuchos::ParameterEntry& e = from.entry(it);
+    if (e.isList())
+      setUnread(to.sublist(name), Teuchos::any_cast<Teuchos::ParameterList>(e.getAny(false)));
+    else
+      to.setEntry(name, Teuchos::ParameterEntry(e.getAny(false), e.isDefault(), false, e.docString(), e.validator()));
+  }
+}
+
+}  // namespace
+
 Teuchos::RCP<Teuchos::ParameterList> Continuation::defaultLocaParameters() {
   auto p = Teuchos::rcp(new Teuchos::ParameterList("LOCA"));
   auto& stepper = p->sublist("Stepper");
@@ -313,7 +330,7 @@ Continuation::Continuation(Teuchos::RCP<ParameterizedModel> model, const NewtonS
   if (loca.isSublist("Stepper") && loca.sublist("Stepper").isParameter("Max Nonlinear Iterations"))
     throw InputError("LOCA/Stepper/Max Nonlinear Iterations: set by cgcm from Solver/Newton/Max Iterations");
   loca_ = defaultLocaParameters();
-  loca_->setParameters(loca);
+  setUnread(*loca_, loca);
   loca_->sublist("Stepper").set("Max Nonlinear Iterations", newton_.maxIterations);
   lastParams_ = Teuchos::rcp(new Teuchos::ParameterList(*loca_));
 }

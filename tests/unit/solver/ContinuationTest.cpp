@@ -138,6 +138,9 @@ TEST(Continuation, LocaParametersItDoesNotReadAreRejected) {
   Teuchos::ParameterList loca("LOCA");
   loca.sublist("Stepper").set("Max Stepz", 10);
   loca.sublist("Step Size").set("Max Step Size", 0.5);  // a real one
+  // read before, as the deck's echo to parameters.xml reads every entry: still told apart
+  EXPECT_EQ(loca.sublist("Stepper").get<int>("Max Stepz"), 10);
+  ASSERT_TRUE(loca.sublist("Stepper").getEntry("Max Stepz").isUsed());
   solver::Continuation continuation(c.model, c.newton, loca);
   try {
     continuation.validate(*x);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cgcm/core/Bytes.hpp"
 #include "cgcm/core/Formulation.hpp"
 #include "cgcm/mesh/Mesh.hpp"
 
@@ -64,6 +65,11 @@ struct Model {
   Real referenceArea = 1.0;
   std::vector<std::string> report;  ///< what the run's log says about the model
 };
+
+/// Everything of a model but its mesh, as bytes, and back (the mesh stays null):
+/// what the other ranks receive of rank 0's model (the mesh travels in parts, LocalPart.hpp).
+void put(core::ByteWriter& out, const Model& model);
+Model getModel(core::ByteReader& in);
 
 /// The Geometry sublist: every parameter with its default and help.
 Teuchos::RCP<const Teuchos::ParameterList> validParameters();
