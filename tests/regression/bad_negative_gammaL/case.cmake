@@ -1,0 +1,3 @@
+# Bad decks stop before any work with a message naming the parameter (cgcm_bad_deck: the
+# output must match; the exit code is not checked). Here: a negative gammaL.
+cgcm_bad_deck(SANITIZE REGEX "gammaL")

@@ -1,0 +1,4 @@
+# Bad decks stop before any work with a message naming the parameter (cgcm_bad_deck: the
+# output must match; the exit code is not checked). Here: continuation in gammaW without
+# its Parameter Path.
+cgcm_bad_deck(SANITIZE REGEX "Parameter Path")

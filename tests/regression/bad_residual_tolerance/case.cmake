@@ -1,0 +1,4 @@
+# Bad decks stop before any work with a message naming the parameter (cgcm_bad_deck: the
+# output must match; the exit code is not checked). Here: a Newton residual tolerance of
+# 0, below its range.
+cgcm_bad_deck(SANITIZE REGEX "Residual Tolerance")

@@ -1,0 +1,5 @@
+# Bad input stops with exit code 2 before any solving, with a message naming the problem.
+# Numbers that are not numbers stop before any work, with the parameter's path. Here:
+# Young's Modulus of type double that is not a number (Teuchos alone would read 0 and
+# report a range error about 0).
+cgcm_bad_input(SANITIZE REGEX "Material/Young's Modulus: \"abc\" is not a number")
