@@ -12,11 +12,7 @@ namespace cgcm::interaction {
 using Teuchos::ParameterList;
 
 Teuchos::RCP<const ParameterList> validParameters() {
-  using validators::atLeast;
-  using validators::between;
-  using validators::choices;
-  using validators::intAtLeast;
-  using validators::intBetween;
+  using namespace validators;
   static const Teuchos::RCP<const ParameterList> valid = [] {
     auto inter = Teuchos::rcp(new ParameterList("Interaction"));
     std::vector<std::string> names;

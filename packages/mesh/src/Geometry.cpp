@@ -109,11 +109,7 @@ Model getModel(core::ByteReader& in) {
 }
 
 Teuchos::RCP<const ParameterList> validParameters() {
-  using validators::atLeast;
-  using validators::between;
-  using validators::choices;
-  using validators::intAtLeast;
-  using validators::intBetween;
+  using namespace validators;
   static const Teuchos::RCP<const ParameterList> valid = [] {
     auto g = Teuchos::rcp(new ParameterList("Geometry"));
     g->set("Type", "sphere on half-space",

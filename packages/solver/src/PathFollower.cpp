@@ -14,10 +14,7 @@ namespace {
 // u, as under a rigid loading device (LoadStepper).
 class DisplacementControl final : public PathFollower {
  public:
-  std::string name() const override { return "displacement"; }
-  bool tracesUnstableBranches() const override { return false; }
-  bool restartable() const override { return true; }
-  bool usesContinuation() const override { return false; }
+  DisplacementControl() : PathFollower({"displacement", false, true, false}) {}
 
   PathCost follow(Vector& u, const PathPlan& plan, PathContext& c, const Observer& observer) const override {
     LoadStepper stepper(c.model, *c.newton, plan.path(), c.continuation);
@@ -45,10 +42,7 @@ class DisplacementControl final : public PathFollower {
 // branches included.
 class ArcLengthControl final : public PathFollower {
  public:
-  std::string name() const override { return "arc-length"; }
-  bool tracesUnstableBranches() const override { return true; }
-  bool restartable() const override { return false; }
-  bool usesContinuation() const override { return true; }
+  ArcLengthControl() : PathFollower({"arc-length", true, false, true}) {}
 
   PathCost follow(Vector& u, const PathPlan& plan, PathContext& c, const Observer& observer) const override {
     const auto& waypoints = plan.path().path;

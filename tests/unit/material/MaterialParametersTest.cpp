@@ -25,12 +25,16 @@ std::string refusal(const Teuchos::ParameterList& overrides) {
   return "";
 }
 
+void expectLaw(const NeoHookean& m, Real Y, Real nu, VolumetricLaw law, Kinematics kinematics) {
+  EXPECT_NEAR(m.youngsModulus(), Y, 1e-13 * Y);
+  EXPECT_NEAR(m.poissonRatio(), nu, 1e-14);
+  EXPECT_EQ(m.law, law);
+  EXPECT_EQ(m.kinematics, kinematics);
+}
+
 TEST(MaterialParameters, DefaultsAreThePapersSolid) {
-  const NeoHookean m = fromParameters(validated(Teuchos::ParameterList()));
-  EXPECT_NEAR(m.youngsModulus(), 1.0, 1e-14);
-  EXPECT_NEAR(m.poissonRatio(), 0.2, 1e-14);
-  EXPECT_EQ(m.law, VolumetricLaw::LogSquared);
-  EXPECT_EQ(m.kinematics, Kinematics::FiniteStrain);
+  expectLaw(fromParameters(validated(Teuchos::ParameterList())), 1.0, 0.2, VolumetricLaw::LogSquared,
+            Kinematics::FiniteStrain);
 }
 
 TEST(MaterialParameters, EveryParameterReachesTheLaw) {
@@ -39,11 +43,7 @@ TEST(MaterialParameters, EveryParameterReachesTheLaw) {
   list.set("Poisson's Ratio", 0.3);
   list.set("Volumetric Energy", std::string("(Lambda/4)(J^2-1-2 ln J)"));
   list.set("Kinematics", std::string("small strain"));
-  const NeoHookean m = fromParameters(validated(list));
-  EXPECT_NEAR(m.youngsModulus(), 3.5, 1e-13);
-  EXPECT_NEAR(m.poissonRatio(), 0.3, 1e-14);
-  EXPECT_EQ(m.law, VolumetricLaw::QuadraticJ);
-  EXPECT_EQ(m.kinematics, Kinematics::SmallStrain);
+  expectLaw(fromParameters(validated(list)), 3.5, 0.3, VolumetricLaw::QuadraticJ, Kinematics::SmallStrain);
 }
 
 TEST(MaterialParameters, ABodyOverridesOnlyWhatItGives) {
@@ -52,10 +52,8 @@ TEST(MaterialParameters, ABodyOverridesOnlyWhatItGives) {
   base.set("Kinematics", std::string("small strain"));
   Teuchos::ParameterList overrides;
   overrides.set("Poisson's Ratio", std::string("0.35"));  // a number as text, as the command line gives it
-  const NeoHookean m = fromParameters(validated(base), overrides, "Bodies/tip/");
-  EXPECT_NEAR(m.youngsModulus(), 2.0, 1e-14);
-  EXPECT_NEAR(m.poissonRatio(), 0.35, 1e-14);
-  EXPECT_EQ(m.kinematics, Kinematics::SmallStrain);
+  expectLaw(fromParameters(validated(base), overrides, "Bodies/tip/"), 2.0, 0.35, VolumetricLaw::LogSquared,
+            Kinematics::SmallStrain);
 }
 
 TEST(MaterialParameters, ABodysBadOverrideIsNamedWithItsPath) {

@@ -56,22 +56,30 @@ class PathPlan;
 class PathFollower {
  public:
   using Observer = std::function<void(const PathState&)>;
+  /// What a control is, for the run's outputs and checks.
+  struct Traits {
+    const char* name;  ///< its Loading/Control value
+    /// Its curve holds the unstable branches between folds (arc-length); the
+    /// path of a rigid loading device is then derived from it. Otherwise the
+    /// curve is that path already (stable branches joined by jumps).
+    bool tracesUnstableBranches;
+    bool restartable;       ///< a killed run can go on from its last accepted state (checkpoint.bin)
+    bool usesContinuation;  ///< LOCA is used along the path in u (its parameters are checked before the run)
+  };
+  explicit PathFollower(const Traits& traits) : traits_(traits) {}
   virtual ~PathFollower() = default;
-  /// Its Loading/Control value.
-  virtual std::string name() const = 0;
-  /// Its curve holds the unstable branches between folds (arc-length); the
-  /// path of a rigid loading device is then derived from it. Otherwise the
-  /// curve is that path already (stable branches joined by jumps).
-  virtual bool tracesUnstableBranches() const = 0;
-  /// A killed run can go on from its last accepted state (checkpoint.bin).
-  virtual bool restartable() const = 0;
-  /// LOCA is used along the path in u (its parameters are then checked before the run).
-  virtual bool usesContinuation() const = 0;
+  std::string name() const { return traits_.name; }
+  bool tracesUnstableBranches() const { return traits_.tracesUnstableBranches; }
+  bool restartable() const { return traits_.restartable; }
+  bool usesContinuation() const { return traits_.usesContinuation; }
   /// Follows the plan's Approach Path from u (the initial guess at its first
   /// value; a restart: the accepted state of context.resume), calling
   /// `observer` after every accepted state. Throws NumericalError, naming
   /// where and why, if the path cannot be followed (every state observed so far stays valid).
   virtual PathCost follow(Vector& u, const PathPlan& plan, PathContext& context, const Observer& observer) const = 0;
+
+ private:
+  Traits traits_;
 };
 
 /// A Loading/Control value: its follower.
