@@ -2,7 +2,6 @@
 
 #include <boost/crc.hpp>
 
-#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -154,11 +153,12 @@ Checkpoint readCheckpoint(const std::string& dir) {
   if (in.bad()) throw InputError("--restart " + dir + ": cannot read " + path);
   const std::string refused = "--restart " + dir + ": " + path;
   constexpr std::size_t header = sizeof kMagicStem + 1;
-  // A checkpoint of another format version says so; the checksum then decides.
-  if (bytes.size() >= header && std::memcmp(bytes.data(), kMagicStem, sizeof kMagicStem) == 0 &&
-      bytes[sizeof kMagicStem] != kVersion && std::isdigit(static_cast<unsigned char>(bytes[sizeof kMagicStem])))
-    throw InputError(refused + " is a checkpoint of format " + bytes[sizeof kMagicStem] + " (" +
-                     (bytes[sizeof kMagicStem] < kVersion ? "an older" : "a newer") + " cgcm); this cgcm reads format " +
+  const bool cgcm = bytes.size() >= header && std::memcmp(bytes.data(), kMagicStem, sizeof kMagicStem) == 0;
+  const char version = cgcm ? bytes[sizeof kMagicStem] : 0;
+  // format 1: no checksum, the end mark last
+  if (version == '1' && bytes.size() >= header + sizeof kEnd &&
+      std::memcmp(bytes.data() + bytes.size() - sizeof kEnd, kEnd, sizeof kEnd) == 0)
+    throw InputError(refused + " is a checkpoint of format 1, written by an older cgcm; this cgcm reads format " +
                      kVersion + ": run the deck again from the start");
   if (bytes.size() < header + sizeof(Checksum))
     throw InputError(refused + " is damaged or not a cgcm checkpoint (" + std::to_string(bytes.size()) +
@@ -169,8 +169,11 @@ Checkpoint readCheckpoint(const std::string& dir) {
   if (crc32(bytes.data(), body) != stored)
     throw InputError(refused + " is damaged: its checksum (CRC-32) does not match its contents (the file was cut "
                      "or changed after cgcm wrote it, or it is not a cgcm checkpoint)");
-  if (std::memcmp(bytes.data(), kMagicStem, sizeof kMagicStem) != 0 || bytes[sizeof kMagicStem] != kVersion)
-    throw InputError(refused + " is not a cgcm checkpoint");
+  if (!cgcm) throw InputError(refused + " is not a cgcm checkpoint");
+  // a later format that keeps the checksum at the end
+  if (version != kVersion)
+    throw InputError(refused + " is a checkpoint of format " + version + ", written by a newer cgcm; this cgcm reads "
+                     "format " + kVersion);
   Checkpoint c;
   std::istringstream fieldsIn(bytes.substr(header, body - header), std::ios::binary);
   if (!parseFields(fieldsIn, body, c))

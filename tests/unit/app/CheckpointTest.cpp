@@ -148,20 +148,33 @@ TEST(Checkpoint, RefusesAForeignFile) {
   EXPECT_NE(why.find(checkpointPath(dir)), std::string::npos) << why;
 }
 
-// A checkpoint of format 1 (no checksum): its version named, and what to do.
+// Another format version: format 1 (no checksum, the end mark last) is named
+// with what to do; a version byte changed in a format-2 file is damage.
 TEST(Checkpoint, RefusesTheOlderFormat) {
   const std::string dir = freshDir("format1");
   ASSERT_TRUE(writeCheckpoint(dir, sample()));
+  const auto size = std::filesystem::file_size(checkpointPath(dir));
+  std::filesystem::resize_file(checkpointPath(dir), size - 4);  // format 1 had no checksum
   {
     std::fstream f(checkpointPath(dir), std::ios::binary | std::ios::in | std::ios::out);
     f.seekp(7);
     f.put('1');
   }
-  const std::string why = refusal(dir);
-  EXPECT_NE(why.find(checkpointPath(dir) + " is a checkpoint of format 1 (an older cgcm); this cgcm reads format 2"),
+  std::string why = refusal(dir);
+  EXPECT_NE(why.find(checkpointPath(dir) + " is a checkpoint of format 1, written by an older cgcm; this cgcm reads "
+                                           "format 2: run the deck again from the start"),
             std::string::npos)
       << why;
-  EXPECT_NE(why.find("run the deck again from the start"), std::string::npos) << why;
+  for (char version : {'1', '3'}) {
+    ASSERT_TRUE(writeCheckpoint(dir, sample()));
+    {
+      std::fstream f(checkpointPath(dir), std::ios::binary | std::ios::in | std::ios::out);
+      f.seekp(7);
+      f.put(version);
+    }
+    why = refusal(dir);
+    EXPECT_NE(why.find("is damaged: its checksum"), std::string::npos) << version << ": " << why;
+  }
 }
 
 }  // namespace
