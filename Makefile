@@ -27,12 +27,14 @@ test: build
 # The unit tests and a CI-sized subset of the regressions (ctest label
 # "sanitize") in a separate build with AddressSanitizer + UndefinedBehavior-
 # Sanitizer. Leak detection is off: OpenMPI's and its plugins' allocations
-# at exit are reported as leaks and cannot be told apart from ours.
+# at exit are reported as leaks and cannot be told apart from ours. Only the
+# programs those tests run are built (the target cgcm_sanitize_targets,
+# tests/CMakeLists.txt): not the benchmarks nor cgcm-analytic.
 SANITIZE_DIR ?= build-sanitize
 sanitize: deps
 	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Release -DCGCM_SANITIZE=ON > $(SANITIZE_DIR).configure.log 2>&1 \
 	  || (cat $(SANITIZE_DIR).configure.log; exit 1)
-	@cmake --build $(SANITIZE_DIR) -j$(JOBS)
+	@cmake --build $(SANITIZE_DIR) -j$(JOBS) --target cgcm_sanitize_targets
 	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j$(JOBS) -L "unit|sanitize"
 

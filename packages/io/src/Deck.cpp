@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
@@ -245,9 +247,73 @@ double parseDouble(const std::string& path, const std::string& text) {
   return v;
 }
 
+int xmlNestingDepth(const std::string& text, int stopAbove) {
+  const std::size_t n = text.size();
+  // the position after the first `close` at or after `from` (n if none)
+  auto past = [&](std::size_t from, const char* close) {
+    const auto at = text.find(close, from);
+    return at == std::string::npos ? n : at + std::strlen(close);
+  };
+  int depth = 0, deepest = 0;
+  for (std::size_t i = text.find('<'); i < n; i = text.find('<', i)) {
+    if (text.compare(i, 4, "<!--") == 0) {
+      i = past(i + 4, "-->");
+    } else if (text.compare(i, 9, "<![CDATA[") == 0) {
+      i = past(i + 9, "]]>");
+    } else if (text.compare(i, 2, "<?") == 0) {
+      i = past(i + 2, "?>");
+    } else if (text.compare(i, 2, "<!") == 0) {  // <!DOCTYPE ...>, with an internal subset in [...]
+      int brackets = 0;
+      char quote = 0;
+      for (i += 2; i < n; ++i) {
+        const char c = text[i];
+        if (quote) {
+          if (c == quote) quote = 0;
+        } else if (c == '"' || c == '\'') {
+          quote = c;
+        } else if (c == '[') {
+          ++brackets;
+        } else if (c == ']') {
+          --brackets;
+        } else if (c == '>' && brackets <= 0) {
+          break;
+        }
+      }
+      ++i;
+    } else if (text.compare(i, 2, "</") == 0) {
+      depth = std::max(0, depth - 1);
+      i = past(i + 2, ">");
+    } else {  // a start tag: to its '>' outside quoted attribute values
+      char quote = 0;
+      std::size_t j = i + 1;
+      for (; j < n; ++j) {
+        const char c = text[j];
+        if (quote) {
+          if (c == quote) quote = 0;
+        } else if (c == '"' || c == '\'') {
+          quote = c;
+        } else if (c == '>') {
+          break;
+        }
+      }
+      if (j >= n) break;  // unterminated: the parser's to report
+      if (text[j - 1] != '/') {
+        deepest = std::max(deepest, ++depth);
+        if (deepest > stopAbove) return stopAbove + 1;
+      }
+      i = j + 1;
+    }
+  }
+  return deepest;
+}
+
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
-  std::ifstream probe(path);
+  std::ifstream probe(path, std::ios::binary);
   if (!probe) throw InputError("cannot read the input deck \"" + path + "\"");
+  const std::string text{std::istreambuf_iterator<char>(probe), std::istreambuf_iterator<char>()};
+  if (xmlNestingDepth(text, kMaxDeckNesting) > kMaxDeckNesting)
+    throw InputError("input deck \"" + path + "\" nests its elements more than " + std::to_string(kMaxDeckNesting) +
+                     " levels deep (the limit; a deck needs 3 or 4): refused before parsing");
   // The XML and every value are checked here, with the parameter's path,
   // before Teuchos converts them (it reads a bad number as 0).
   Teuchos::XMLObject xml;

@@ -1,5 +1,6 @@
-// checkpoint.bin: written and read back field by field; a truncated or
-// foreign file is refused with a message naming it; a missing one too.
+// checkpoint.bin: written and read back field by field; a truncated,
+// changed (any byte), foreign or format-1 file is refused with a message
+// naming it; a missing one too.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -78,29 +79,102 @@ TEST(Checkpoint, ReadsBackWhatWasWritten) {
   }
 }
 
-TEST(Checkpoint, RefusesMissingTruncatedAndForeignFiles) {
-  const std::string dir = freshDir("bad");
+// The message of readCheckpoint(dir), or "" if it accepted the file.
+std::string refusal(const std::string& dir) {
   try {
     readCheckpoint(dir);
-    FAIL() << "no checkpoint accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no checkpoint"), std::string::npos) << e.what();
+    return e.what();
   }
+  return "";
+}
+
+void changeByte(const std::string& path, std::uintmax_t at) {
+  std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
+  f.seekg(std::streamoff(at));
+  const char c = char(f.get());
+  f.seekp(std::streamoff(at));
+  f.put(char(c ^ 0x10));
+  ASSERT_TRUE(f.good());
+}
+
+TEST(Checkpoint, RefusesAMissingFile) {
+  const std::string dir = freshDir("missing");
+  EXPECT_NE(refusal(dir).find("no checkpoint"), std::string::npos);
+}
+
+TEST(Checkpoint, RefusesTruncatedFiles) {
+  const std::string dir = freshDir("truncated");
   ASSERT_TRUE(writeCheckpoint(dir, sample()));
   const auto size = std::filesystem::file_size(checkpointPath(dir));
-  for (std::uintmax_t keep : {std::uintmax_t(0), std::uintmax_t(5), size / 2, size - 1}) {
+  for (std::uintmax_t keep : {std::uintmax_t(0), std::uintmax_t(5), std::uintmax_t(8), size / 2, size - 4, size - 1}) {
     ASSERT_TRUE(writeCheckpoint(dir, sample()));
     std::filesystem::resize_file(checkpointPath(dir), keep);
-    try {
-      readCheckpoint(dir);
-      FAIL() << "a checkpoint cut to " << keep << " of " << size << " bytes accepted";
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("truncated or not a cgcm checkpoint"), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find(checkpointPath(dir)), std::string::npos) << e.what();
-    }
+    const std::string why = refusal(dir);
+    EXPECT_NE(why.find("is damaged"), std::string::npos) << "cut to " << keep << " of " << size << ": " << why;
+    EXPECT_NE(why.find(checkpointPath(dir)), std::string::npos) << why;
   }
+}
+
+// Every byte, one at a time: the magic, the stepper's state, the curve, the
+// vectors, the end mark and the checksum itself.
+TEST(Checkpoint, RefusesAnyChangedByte) {
+  const std::string dir = freshDir("changed");
+  ASSERT_TRUE(writeCheckpoint(dir, sample()));
+  const auto size = std::filesystem::file_size(checkpointPath(dir));
+  for (std::uintmax_t at = 0; at < size; ++at) {
+    ASSERT_TRUE(writeCheckpoint(dir, sample()));
+    changeByte(checkpointPath(dir), at);
+    const std::string why = refusal(dir);
+    EXPECT_NE(why.find("is damaged: its checksum (CRC-32) does not match"), std::string::npos)
+        << "byte " << at << " of " << size << ": " << why;
+    EXPECT_NE(why.find(checkpointPath(dir)), std::string::npos) << why;
+  }
+  // the middle and the last byte, named as such
+  for (std::uintmax_t at : {size / 2, size - 1}) {
+    ASSERT_TRUE(writeCheckpoint(dir, sample()));
+    changeByte(checkpointPath(dir), at);
+    EXPECT_NE(refusal(dir).find("checksum"), std::string::npos) << "byte " << at;
+  }
+  ASSERT_TRUE(writeCheckpoint(dir, sample()));
+  EXPECT_EQ(refusal(dir), "");
+}
+
+TEST(Checkpoint, RefusesAForeignFile) {
+  const std::string dir = freshDir("foreign");
   std::ofstream(checkpointPath(dir)) << "P,u\n0,1\n";
-  EXPECT_THROW(readCheckpoint(dir), InputError);
+  const std::string why = refusal(dir);
+  EXPECT_NE(why.find("is damaged"), std::string::npos) << why;
+  EXPECT_NE(why.find(checkpointPath(dir)), std::string::npos) << why;
+}
+
+// Another format version: format 1 (no checksum, the end mark last) is named
+// with what to do; a version byte changed in a format-2 file is damage.
+TEST(Checkpoint, RefusesTheOlderFormat) {
+  const std::string dir = freshDir("format1");
+  ASSERT_TRUE(writeCheckpoint(dir, sample()));
+  const auto size = std::filesystem::file_size(checkpointPath(dir));
+  std::filesystem::resize_file(checkpointPath(dir), size - 4);  // format 1 had no checksum
+  {
+    std::fstream f(checkpointPath(dir), std::ios::binary | std::ios::in | std::ios::out);
+    f.seekp(7);
+    f.put('1');
+  }
+  std::string why = refusal(dir);
+  EXPECT_NE(why.find(checkpointPath(dir) + " is a checkpoint of format 1, written by an older cgcm; this cgcm reads "
+                                           "format 2: run the deck again from the start"),
+            std::string::npos)
+      << why;
+  for (char version : {'1', '3'}) {
+    ASSERT_TRUE(writeCheckpoint(dir, sample()));
+    {
+      std::fstream f(checkpointPath(dir), std::ios::binary | std::ios::in | std::ios::out);
+      f.seekp(7);
+      f.put(version);
+    }
+    why = refusal(dir);
+    EXPECT_NE(why.find("is damaged: its checksum"), std::string::npos) << version << ": " << why;
+  }
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 // vectors (by global dof). Written by rank 0 after every accepted state,
 // through a temporary file and a rename, so a run killed at any moment
 // leaves either the previous checkpoint or the new one, never a torn file.
+// The file ends with a CRC-32 of all its bytes before it (format 2, magic
+// "cgcmckp2"): a file cut or changed after the write is refused on reading.
 #include <string>
 #include <vector>
 
@@ -32,7 +34,9 @@ std::string checkpointPath(const std::string& dir);
 bool writeCheckpoint(const std::string& dir, const Checkpoint& c);
 
 /// Reads the checkpoint of `dir` (every rank reads the file). Throws
-/// InputError naming the file if it is missing, truncated or of another format.
+/// InputError naming the file if it is missing, damaged (its checksum does
+/// not match: truncated or changed), of another format version, or not a
+/// checkpoint.
 Checkpoint readCheckpoint(const std::string& dir);
 
 /// A distributed vector gathered on rank 0 in global dof order, and back.

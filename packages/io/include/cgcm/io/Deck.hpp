@@ -10,8 +10,26 @@
 
 namespace cgcm::io {
 
-/// Reads an XML deck. Throws InputError if the file is missing or not a parameter list.
+/// Reads an XML deck. Throws InputError if the file is missing, nests its
+/// elements deeper than kMaxDeckNesting, or is not a parameter list.
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);
+
+/// The deepest element nesting readDeck accepts. A deck nests 3 or 4 levels
+/// (cgcm > Bodies > tip > parameter; a LOCA or Stratimikos list a few more);
+/// 64 leaves room for any hand-written list. The XML tree is walked by
+/// recursion (readDeck's number check, Teuchos' parameter-list reader and
+/// the tree's destructor), stack frames per level: 10 000 levels ended in a
+/// segmentation fault instead of a message, so deeper files are refused
+/// before they are parsed.
+constexpr int kMaxDeckNesting = 64;
+
+/// The deepest nesting of elements in the XML `text` (0: no element), found
+/// by a scan of its tags, without parsing: comments, CDATA sections,
+/// processing instructions and <!DOCTYPE ...> are skipped, a self-closing
+/// tag <a/> does not nest, and '>' or '<' in a quoted attribute value is
+/// text. The scan stops once the depth exceeds `stopAbove` (it then returns
+/// stopAbove + 1). Unterminated or unbalanced markup is left to the parser.
+int xmlNestingDepth(const std::string& text, int stopAbove = kMaxDeckNesting);
 
 /// Applies overrides of the form "Sublist/Sub/Parameter=value". The value is
 /// parsed with the type the valid list gives the parameter (double, int, bool,
