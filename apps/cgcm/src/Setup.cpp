@@ -35,7 +35,8 @@ RCP<const ParameterList> validParameters() {
               choices({"plane strain", "axisymmetric", "3D"}));
   // each package declares its own sublist
   valid->sublist("Geometry", false, "bodies and their mesh") = *mesh::validParameters();
-  valid->sublist("Material", false, "compressible Neo-Hookean solid (THEORY section 3)") = *material::validParameters();
+  valid->sublist("Material", false, "compressible Neo-Hookean solid (doc/theory.md#bulk)") =
+      *material::validParameters();
   valid->sublist("Bodies", false,
                  "per-body materials: a sublist named after a body of the mesh (the <name> of its \"body:<name>\" "
                  "group, or a built-in geometry's \"sphere\", \"half-space\", \"second sphere\", \"block\") "
@@ -44,7 +45,8 @@ RCP<const ParameterList> validParameters() {
       .disableRecursiveValidation();
 
   valid->sublist("Interaction", false,
-                 "Lennard-Jones interaction between the bodies (sphere geometries), THEORY sections 2, 4") =
+                 "Lennard-Jones interaction between the bodies (sphere geometries), doc/theory.md#method-3, "
+                 "#normalisation") =
       *interaction::validParameters();
 
   valid->sublist("Loading", false, "how the path is followed: the load parameter u is the prescribed displacement") =

@@ -188,7 +188,7 @@ void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation
 }
 
 std::vector<std::string> describe(const InteractionSetup& s, const ReferenceScales& scales) {
-  // Derived scales (THEORY sections 2, 4, 5).
+  // Derived scales (doc/theory.md#method-3, #normalisation; doc/analytic-models.md).
   const Real beta0 = s.density, r0 = s.potential->r0(), epsilon = s.potential->epsilon();
   const Real Y = scales.youngsModulus, nu = scales.poissonRatio, R = scales.reducedRadius, R0 = scales.R0;
   const Real rS0 = s.contactDistance();

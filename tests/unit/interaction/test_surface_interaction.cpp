@@ -1,5 +1,5 @@
 // Method 3 driver: pair list, evaluation, resultants, graph couplings,
-// global tangent, and the analytic limits of THEORY §2 (flat-on-flat
+// global tangent, and the analytic limits of doc/theory.md#method-3 (flat-on-flat
 // traction, rigid sphere above a flat: Derjaguin and -2 pi w R).
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // direct quadrature and finite differences, the pair kernel's forces against
 // the gradient of its energy, its tangent against finite differences of the
 // forces, the balance of the forces on the two bodies, and two flat blocks
-// against the half-space traction (THEORY §2).
+// against the half-space traction (doc/theory.md#method-3).
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Closest-point search from a point onto the discretised surface of a body
-// (THEORY §2): the closest point over all facets, including their edges and
+// (doc/theory.md#method-3): the closest point over all facets, including their edges and
 // vertices (projection with clamping), so that the distance is continuous.
 //
 // The interface is dimension-neutral: the 2D/axisymmetric implementations

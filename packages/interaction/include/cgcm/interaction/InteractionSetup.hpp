@@ -1,7 +1,7 @@
 #pragma once
 // The deck's Interaction sublist, declared and read here: the pair potential
 // and its scales from one of three parameterisations (gammaL and gammaW; the
-// paper's barred values; r0 and epsilon: THEORY section 4), the method
+// paper's barred values; r0 and epsilon: doc/theory.md#normalisation), the method
 // (Method 3 or Method 1) with its options, the interaction it builds on a
 // mesh, and the scalar parameters gammaW and gammaL that continuation moves.
 #include <Teuchos_ParameterList.hpp>
@@ -42,7 +42,7 @@ struct InteractionSetup {
   SurfaceInteractionOptions surfaceOptions;  ///< Method 3
   VolumeInteractionOptions volumeOptions;    ///< Method 1
   Real searchRadiusFactor = 2.0;             ///< graph search radius / cutoff (> 1)
-  Real gammaL = 0.0, gammaW = 0.0;           ///< the deck's scaling parameters (THEORY section 4)
+  Real gammaL = 0.0, gammaW = 0.0;           ///< the deck's scaling parameters (doc/theory.md#normalisation)
 
   /// r_S0 of Lennard-Jones with this potential's r0, whatever the potential
   /// (a repulsive one has none): where u = 0 puts the undeformed surfaces.

@@ -4,7 +4,7 @@
 // (c6 = 0). Every law in closed form:
 //   point pair    f(s) = phi(sqrt s), s = r^2;
 //   half-space    integral over {z >= r} of C s^-n dv = 2 pi C r^(3 - n) / ((n - 2)(n - 3))
-//                 (THEORY §2), so Phi/beta = (pi/45) c12 r^-9 - (pi/6) c6 r^-3;
+//                 (doc/theory.md#method-3), so Phi/beta = (pi/45) c12 r^-9 - (pi/6) c6 r^-3;
 //   line          int (s + z^2)^-m dz = s^(1/2 - m) sqrt(pi) Gamma(m - 1/2) / Gamma(m):
 //                 63 pi / 256 s^-5.5 for m = 6 and 3 pi / 8 s^-2.5 for m = 3;
 //   ring          (1/2 pi) int (A - B cos theta)^-m dtheta = D^(-m/2) P_(m-1)(A / sqrt D)

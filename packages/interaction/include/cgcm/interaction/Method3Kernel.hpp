@@ -1,5 +1,5 @@
 #pragma once
-// Method 3 surface kernel (eq. 21, THEORY §2) for 2D segments, plane strain
+// Method 3 surface kernel (eq. 21, doc/theory.md#method-3) for 2D segments, plane strain
 // and axisymmetric, with its exact tangent.
 //
 // Unit of work: one interaction pair = (segment e of body k, quadrature

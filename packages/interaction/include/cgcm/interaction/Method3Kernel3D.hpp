@@ -1,5 +1,5 @@
 #pragma once
-// Method 3 surface kernel (eq. 21, THEORY §2) in 3D, with its exact tangent.
+// Method 3 surface kernel (eq. 21, doc/theory.md#method-3) in 3D, with its exact tangent.
 //
 // Unit of work: one interaction pair = (facet e of body k with NF = 3 or 4
 // nodes, quadrature point q of e, triangle s of the surface of body l). With

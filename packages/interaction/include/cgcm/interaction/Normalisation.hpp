@@ -1,5 +1,5 @@
 #pragma once
-// Normalisation of the interaction parameters (THEORY §4, eqs. 22, 28):
+// Normalisation of the interaction parameters (doc/theory.md#normalisation, eqs. 22, 28):
 //
 //     gammaL = R0 / r0,    gammaW = Y / (beta0^2 r0^3 eps).
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Pair potentials and their half-space integrals (Method 3, THEORY §2).
+// Pair potentials and their half-space integrals (Method 3, doc/theory.md#method-3).
 //
 // A potential phi(r) between two particles is integrated over a flat
 // half-space of unit density at distance r from a point (eq. 17):
@@ -50,7 +50,7 @@ class PairPotential {
   /// Both at once (the kernel's inner loop); the default calls the two above.
   virtual void halfSpaceWithDerivative(Real r, Real& value, Real& derivative) const;
 
-  /// Surface equilibrium distance r_S0, the zero of Phi (THEORY §2). Empty when
+  /// Surface equilibrium distance r_S0, the zero of Phi (doc/theory.md#method-3). Empty when
   /// Phi never changes sign (a purely repulsive potential has no equilibrium).
   /// Default: numerical root search on [1e-3 r0, 1e3 r0].
   virtual std::optional<Real> surfaceEquilibriumDistance() const;

@@ -1,5 +1,5 @@
 #pragma once
-// Point-pair laws of Method 1 (the paper's eq. 16, THEORY §1): the energy of
+// Point-pair laws of Method 1 (the paper's eq. 16, doc/theory.md#method-1): the energy of
 // two quadrature points of two bodies, with its first and second derivatives,
 // in the coordinates of each formulation, for a kernel potential P
 // (KernelPotential.hpp):

@@ -1,5 +1,5 @@
 #pragma once
-// Compressible Neo-Hookean material (THEORY.md §3):
+// Compressible Neo-Hookean material (doc/theory.md#bulk):
 //
 //   W(F) = U(J) + μ/2 (I1 − 3) − μ ln J,   I1 = tr(Fᵀ F),  J = det F,
 //
