@@ -11,11 +11,10 @@ struct Distribution {
   Teuchos::RCP<assembly::DofMap> dofs;
 };
 
-/// What the deck alone gives (every rank builds it): formulation, material, partition and, unless the
-/// geometry is a block, the interaction.
+/// What the deck alone gives (every rank builds it): formulation, material, partition.
 ProblemSetup setupFromDeck(const Teuchos::ParameterList& deck);
-/// Joins a model to the deck's set-up: the force scale, the interaction (dropped when the bodies do not
-/// interact) with its report lines, the model's.
+/// Joins a model to the deck's set-up: the force scale, the interaction when the bodies interact (read
+/// from the deck if not yet) with its report lines, the model's lines.
 void attachModel(ProblemSetup& setup, mesh::Model model, const Teuchos::ParameterList& deck);
 
 /// One rank: the set-up's mesh. Several: rank 0 partitions its mesh (Solver/Partition) and sends each

@@ -11,7 +11,6 @@
 #include "cgcm/core/ParameterValidators.hpp"
 #include "cgcm/material/MaterialParameters.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
-#include "cgcm/solver/LoadStepper.hpp"
 #include "cgcm/solver/NewtonSolver.hpp"
 #include "cgcm/solver/PathFollower.hpp"
 
@@ -160,16 +159,24 @@ ProblemSetup setupFromDeck(const ParameterList& deck) {
   s.partition = assembly::parseCellPartition(deck.sublist("Solver").get<std::string>("Partition"));
   if (s.material.kinematics == material::Kinematics::SmallStrain)
     s.report.push_back("Material/Kinematics = small strain: linear elasticity on the reference configuration");
-  // the built-in contact geometries and gmsh meshes of several bodies interact; r_S0 places their u = 0
-  if (deck.sublist("Geometry").get<std::string>("Type") != "block")
-    s.interaction = interaction::fromParameters(deck.sublist("Interaction"), referenceScales(deck, s.material),
-                                                s.formulation);
   return s;
 }
 
+namespace {
+
+// The interaction between the bodies: read when the model has interacting bodies (its r_S0 places u = 0).
+const interaction::InteractionSetup& readInteraction(const ParameterList& deck, ProblemSetup& s) {
+  if (!s.interaction)
+    s.interaction = interaction::fromParameters(deck.sublist("Interaction"), referenceScales(deck, s.material),
+                                                s.formulation);
+  return *s.interaction;
+}
+
+}  // namespace
+
 void attachModel(ProblemSetup& s, mesh::Model model, const ParameterList& deck) {
-  s.forceScale = s.material.youngsModulus() * model.referenceArea;
-  if (!model.interacting) s.interaction.reset();
+  s.forceScale = model.forceScale(s.material.youngsModulus());
+  if (model.interacting) readInteraction(deck, s);  // ranks other than 0 read it here
   if (s.interaction) {
     const auto lines = interaction::describe(*s.interaction, referenceScales(deck, s.material));
     s.report.insert(s.report.end(), lines.begin(), lines.end());
@@ -190,8 +197,8 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   const MemoryLimit memory = memoryLimit(deck.sublist("Output"));
   if (const auto size = estimateBuiltInMesh(deck, s.formulation))
     checkSize(*size, memory, type == "block" ? "Geometry/Block/Cells X, Y, Z" : "Geometry/Mesh Refinement");
-  attachModel(s, mesh::buildModel(geometry, s.formulation, s.interaction ? s.interaction->contactDistance() : 0.0),
-              deck);
+  const auto contactDistance = [&] { return readInteraction(deck, s).contactDistance(); };
+  attachModel(s, mesh::buildModel(geometry, s.formulation, contactDistance), deck);
   const mesh::Mesh& m = *s.model.mesh;
   if (type == "gmsh")
     checkSize(estimateSize(m.numNodes(), m.numCells(), s.formulation), memory,
@@ -215,9 +222,9 @@ Discretization discretize(const Distribution& dist, const ProblemSetup& setup,
                   : std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.bodyMaterials);
   std::vector<ScalarParameter> parameters;
   if (setup.interaction) {
-    d.interaction = setup.interaction->create(*d.mesh);
-    d.problem->setInteraction(d.interaction, setup.interaction->searchRadiusFactor);
-    parameters = setup.interaction->scalarParameters(d.interaction);
+    const auto interaction = setup.interaction->create(*d.mesh);
+    d.problem->setInteraction(interaction, setup.interaction->searchRadiusFactor);
+    parameters = setup.interaction->scalarParameters(interaction);
   }
   d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
   for (const auto& c : setup.model.conditions)

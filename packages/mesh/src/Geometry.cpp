@@ -81,7 +81,7 @@ void put(core::ByteWriter& out, const Model& m) {
     out.put(c->contactDistance);
   }
   out.put(m.interacting);
-  out.put(m.referenceArea);
+  out.put(m.areaFactors);
   out.put(std::uint64_t(m.report.size()));
   for (const auto& line : m.report) out.put(line);
 }
@@ -102,7 +102,7 @@ Model getModel(core::ByteReader& in) {
     m.contact = std::move(c);
   }
   m.interacting = in.get<bool>();
-  m.referenceArea = in.get<Real>();
+  m.areaFactors = in.getVector<Real>();
   m.report.resize(in.getCount(sizeof(std::uint64_t)));
   for (auto& line : m.report) line = in.getString();
   return m;
@@ -199,8 +199,12 @@ void reportWholeBody(Model& s, Formulation formulation, const std::string& mirro
   if (formulation == Formulation::ThreeD) sets = {"symmetry x", "symmetry y"};
   if (formulation == Formulation::PlaneStrain && mirrored.find('x') == std::string::npos) sets = {"axis", "symmetry x"};
   std::string planes;
-  for (const char* set : sets)
-    if (s.mesh->nodeSets.count(set)) s.force.scale *= 2.0, planes += std::string(planes.empty() ? "" : ", ") + set;
+  for (const char* set : sets) {
+    if (!s.mesh->nodeSets.count(set)) continue;
+    // in plane strain "axis" and "symmetry x" name the same line x = 0
+    if (formulation != Formulation::PlaneStrain || planes.empty()) s.force.scale *= 2.0;
+    planes += std::string(planes.empty() ? "" : ", ") + set;
+  }
   if (s.force.scale != 1.0)
     s.report.push_back("P = " + std::to_string(int(s.force.scale)) + " x the resultant on \"" + s.force.nodeSet +
                        "\": the force on the whole body of the mesh's symmetry planes (" + planes + ")" +
@@ -210,14 +214,15 @@ void reportWholeBody(Model& s, Formulation formulation, const std::string& mirro
 
 // Sphere (radius R0, apex at the equilibrium gap above y = 0) over a half-space
 // block or a second sphere; u moves the sphere's equator plane down.
-void buildSphereContact(const ParameterList& g, Formulation formulation, Real contactDistance, Model& s) {
+void buildSphereContact(const ParameterList& g, Formulation formulation, const ContactDistance& contactDistance,
+                        Model& s) {
   const bool onSphere = g.get<std::string>("Type") == "sphere on sphere";
   if (formulation == Formulation::ThreeD)
     throw InputError("Geometry/Type = \"" + g.get<std::string>("Type") +
                      "\" is built in plane strain or axisymmetry; Problem/Formulation = \"3D\" needs a mesh file");
   const Real R0 = g.get<double>("Sphere Radius"), R2 = g.get<double>("Second Sphere Radius");
   const int level = g.get<int>("Mesh Refinement");
-  const Real rS0 = contactDistance;  // u = 0: undeformed surfaces r_S0 apart
+  const Real rS0 = contactDistance();  // u = 0: undeformed surfaces r_S0 apart
 
   mesh::QuarterDiskSpec sphere;
   sphere.radius = R0;
@@ -256,7 +261,7 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, Real co
   if (!onSphere) mesh::removeFacetsOn(*m, 1, m->nodeSet("lower side"));
   s.mesh = m;
   s.interacting = true;
-  s.referenceArea = formulation == Formulation::PlaneStrain ? R0 : R0 * R0;
+  s.areaFactors = formulation == Formulation::PlaneStrain ? std::vector<Real>{R0} : std::vector<Real>{R0, R0};
   s.conditions = {{"axis", 0, 0.0, 0.0},       {"equator", 1, 0.0, -1.0}, {"lower axis", 0, 0.0, 0.0},
                   {"lower equator", 0, 0.0, 0.0}, {"lower equator", 1, 0.0, 0.0}};
   s.force = {"equator", 1, -1.0};  // P > 0: compressive
@@ -311,9 +316,8 @@ std::vector<Real> driveDirection(const ParameterList& g, const mesh::Mesh& m) {
 }
 
 // A mesh from gmsh with the physical-group convention of meshes/README.md
-// mapped to boundary conditions; Lennard-Jones between all bodies when there
-// are several.
-void buildFromGmsh(const ParameterList& g, Formulation formulation, Real contactDistance, Model& s) {
+// mapped to boundary conditions; its bodies interact when there are several.
+void buildFromGmsh(const ParameterList& g, Formulation formulation, const ContactDistance& contactDistance, Model& s) {
   const std::string file = g.get<std::string>("File");
   if (file.empty()) throw InputError("Geometry/Type = \"gmsh\" needs Geometry/File (a gmsh .geo or .msh file)");
   mesh::GmshOptions options;
@@ -366,7 +370,7 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, Real contact
   const bool allComponents = alongVector || g.get<std::string>("Driven Components") == "all";
   if (m->numBodies > 1) {
     s.interacting = true;
-    const Real rS0 = contactDistance;
+    const Real rS0 = contactDistance();
     if (m->nodeSets.count("apex") && m->nodeSets.count("lower apex")) {
       for (const char* set : {"apex", "lower apex"})
         if (m->nodeSet(set).size() != 1)
@@ -386,7 +390,7 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, Real contact
       for (Real di : d) s.balance->direction.push_back(-di);
     }
   }
-  s.referenceArea = formulation == Formulation::PlaneStrain ? R0 : R0 * R0;
+  s.areaFactors = formulation == Formulation::PlaneStrain ? std::vector<Real>{R0} : std::vector<Real>{R0, R0};
   for (int i = 0; i < dim; ++i) {
     const Real shift = i == vertical ? offset : 0.0;
     if (i == vertical || allComponents) s.conditions.push_back({"driven", i, shift, d[i]});
@@ -404,10 +408,6 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, Real contact
     if (m->nodeSets.count(set)) s.conditions.push_back({set, i, 0.0, 0.0});
   }
 }
-
-// Method 1 integrates over the cells the mesh has: a symmetry plane (or, in
-// plane strain, the symmetry line of the built-in half models) would drop the
-// mirror half of every body from the interaction.
 
 // A rectangle (plane strain, axisymmetry) or box stretched along its last
 // axis by u, on symmetry rollers.
@@ -427,7 +427,7 @@ void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
     s.conditions = {{"xmin", 0, 0.0, 0.0}, {"ymin", 1, 0.0, 0.0}, {"zmin", 2, 0.0, 0.0}, {"zmax", 2, 0.0, 1.0}};
     if (clamped) s.conditions.insert(s.conditions.end(), {{"zmax", 0, 0.0, 0.0}, {"zmax", 1, 0.0, 0.0}});
     s.force = {"zmax", 2, 1.0};
-    s.referenceArea = spec.lx * spec.ly;
+    s.areaFactors = {spec.lx, spec.ly};
   } else {
     RectangleSpec spec;
     spec.lx = b.get<double>("Length X");
@@ -438,12 +438,14 @@ void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
     s.conditions = {{"left", 0, 0.0, 0.0}, {"bottom", 1, 0.0, 0.0}, {"top", 1, 0.0, 1.0}};
     if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
     s.force = {"top", 1, 1.0};
-    s.referenceArea = formulation == Formulation::Axisymmetric ? kPi * spec.lx * spec.lx : spec.lx;
+    s.areaFactors = formulation == Formulation::Axisymmetric ? std::vector<Real>{kPi, spec.lx, spec.lx}
+                                                             : std::vector<Real>{spec.lx};
   }
   if (b.get<double>("Distortion") > 0.0)
     perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));
 }
 
+// Every body must be held against rigid motion by its displacement conditions:
 // with the interaction alone its tangent is singular (or nearly: a weak
 // adhesive spring), and Newton fails without saying why. The conditions of a
 // body, evaluated on the rigid modes (translations, rotations; in axisymmetry
@@ -516,10 +518,9 @@ void checkBodiesAreHeld(const Model& s, Formulation formulation) {
   }
 }
 
-
 }  // namespace
 
-Model buildModel(const ParameterList& geometry, Formulation formulation, Real contactDistance) {
+Model buildModel(const ParameterList& geometry, Formulation formulation, const ContactDistance& contactDistance) {
   Model model;
   const std::string type = geometry.get<std::string>("Type");
   if (type == "gmsh")

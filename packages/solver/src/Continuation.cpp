@@ -289,8 +289,9 @@ class PathStepper : public LOCA::Stepper {
 
 namespace {
 
-// `to` gets the entries of `from` (sublists merged) marked as not read: validate() tells the names LOCA
-// reads by their use flags, which an earlier reader of the deck (its echo to parameters.xml) may have set.
+// `to` gets the entries of `from` (sublists merged) marked as not read (a new ParameterEntry starts
+// unused): validate() tells the names LOCA reads by their use flags, which an earlier reader of the
+// deck (its echo to parameters.xml) may have set.
 void setUnread(Teuchos::ParameterList& to, const Teuchos::ParameterList& from) {
   for (auto it = from.begin(); it != from.end(); ++it) {
     const std::string& name = from.name(it);

@@ -60,7 +60,7 @@ void expectSameSetUp(const app::ProblemSetup& sent, const app::ProblemSetup& own
   ASSERT_EQ(sent.model.balance.has_value(), own.model.balance.has_value());
   if (own.model.balance) expectSame(*sent.model.balance, *own.model.balance);
   EXPECT_EQ(sent.model.interacting, own.model.interacting);
-  EXPECT_EQ(sent.model.referenceArea, own.model.referenceArea);
+  EXPECT_EQ(sent.model.areaFactors, own.model.areaFactors);
   ASSERT_EQ(sent.interaction.has_value(), own.interaction.has_value());
   if (own.interaction) {
     const auto &a = *sent.interaction, &b = *own.interaction;

@@ -36,7 +36,7 @@ std::string refusal(const Teuchos::ParameterList& list) {
 mesh::Model benchmark(Formulation f, Real contactDistance) {
   Teuchos::ParameterList g;
   io::validateDeck(g, *mesh::validParameters(), "Geometry/");
-  return mesh::buildModel(g, f, contactDistance);
+  return mesh::buildModel(g, f, [contactDistance] { return contactDistance; });
 }
 
 TEST(InteractionSetup, TheThreeParameterisationsGiveOneInteraction) {

@@ -1,6 +1,6 @@
 // The Geometry sublist belongs to the mesh package: each built-in geometry is
 // a model with its conditions, responses and force scale; u = 0 puts the
-// interacting surfaces the contact distance apart; a body nothing holds is refused.
+// interacting surfaces the contact distance apart; P is the whole body's force.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +15,7 @@ namespace {
 
 Model modelOf(Teuchos::ParameterList g, Formulation f, Real contactDistance = 0.01) {
   io::validateDeck(g, *validParameters(), "Geometry/");
-  return buildModel(g, f, contactDistance);
+  return buildModel(g, f, [contactDistance] { return contactDistance; });
 }
 
 TEST(Geometry, TheBenchmarkIsTwoInteractingBodiesTheContactDistanceApart) {
@@ -33,12 +33,15 @@ TEST(Geometry, TheBenchmarkIsTwoInteractingBodiesTheContactDistanceApart) {
     EXPECT_EQ(m.force.nodeSet, "equator");
     EXPECT_EQ(m.force.sign, -1.0);  // P > 0 compressive
     ASSERT_TRUE(m.balance.has_value());
-    EXPECT_EQ(m.referenceArea, 1.0);  // R0^2 (R0 per unit thickness), R0 = 1
+    EXPECT_EQ(m.forceScale(3.0), 3.0);  // Y R0^2 (Y R0 per unit thickness), R0 = 1
+    // the whole body: the plane-strain models are halves (their axis a symmetry line)
+    EXPECT_EQ(m.force.scale, f == Formulation::PlaneStrain ? 2.0 : 1.0);
+    EXPECT_EQ(m.balance->scale, m.force.scale);
   }
   Teuchos::ParameterList big;
   big.set("Sphere Radius", 2.0);
-  EXPECT_EQ(modelOf(big, Formulation::Axisymmetric).referenceArea, 4.0);
-  EXPECT_EQ(modelOf(big, Formulation::PlaneStrain).referenceArea, 2.0);
+  EXPECT_EQ(modelOf(big, Formulation::Axisymmetric).forceScale(1.0), 4.0);
+  EXPECT_EQ(modelOf(big, Formulation::PlaneStrain).forceScale(1.0), 2.0);
   big.set("Type", std::string("sphere on sphere"));
   big.set("Second Sphere Radius", 6.0);
   EXPECT_DOUBLE_EQ(reducedRadius(big), 1.5);
@@ -51,11 +54,12 @@ TEST(Geometry, ABlockIsStretchedOnRollersAndDoesNotInteract) {
   g.sublist("Block").set("Length Y", 3.0);
   const Model box = modelOf(g, Formulation::ThreeD);
   EXPECT_FALSE(box.interacting);
-  EXPECT_EQ(box.referenceArea, 6.0);  // the loaded face z = Lz
+  EXPECT_EQ(box.forceScale(1.0), 6.0);  // the loaded face z = Lz
+  EXPECT_EQ(box.force.scale, 1.0);     // a block is whole
   EXPECT_EQ(box.force.nodeSet, "zmax");
   EXPECT_EQ(box.conditions.size(), 4u);
   const Model axi = modelOf(g, Formulation::Axisymmetric);
-  EXPECT_NEAR(axi.referenceArea, kPi * 4.0, 1e-14);
+  EXPECT_NEAR(axi.forceScale(1.0), kPi * 4.0, 1e-14);
   g.sublist("Block").set("Loaded Face", std::string("clamped"));
   EXPECT_EQ(modelOf(g, Formulation::PlaneStrain).conditions.size(), 4u);
   EXPECT_EQ(modelOf(g, Formulation::ThreeD).conditions.size(), 6u);

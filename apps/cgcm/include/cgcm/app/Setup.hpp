@@ -52,8 +52,9 @@ void runOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& work
 /// combinations that the validators alone cannot reject.
 ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 /// The same on several ranks: rank 0 builds the problem (it alone meshes and reads mesh files) and
-/// sends the others its set-up without the mesh (their `mesh` is null; discretize() gives each its
-/// part as Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
+/// sends the others its model without the mesh, the body materials and the report; they read the
+/// rest of the deck themselves (their `model.mesh` is null; discretize() gives each its part as
+/// Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
 ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
 
 /// The discrete problem of a set-up: dof distribution, problem (with the
@@ -65,7 +66,6 @@ struct Discretization {
   std::shared_ptr<const mesh::Mesh> mesh;
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
-  std::shared_ptr<interaction::Interaction> interaction;  ///< the problem's interaction, or null
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   Teuchos::RCP<solver::ModelEvaluator> model;
 };

@@ -7,6 +7,7 @@
 // curve reports.
 #include <Teuchos_ParameterList.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,7 +28,7 @@ struct DisplacementCondition {
 };
 
 /// A resultant force: sign * scale * sum of the internal force over a node
-/// set (scale: 2 per symmetry plane of a 3D mesh, for the whole body's force);
+/// set (scale: 2 per symmetry plane of the mesh, for the whole body's force);
 /// with a direction, its component along it instead of `component`, `sign`.
 struct ForceResponse {
   std::string nodeSet;
@@ -59,10 +60,14 @@ struct Model {
   std::optional<ContactGeometry> contact;
   /// The bodies interact (the sphere geometries; gmsh meshes of several bodies).
   bool interacting = false;
-  /// Area (per unit thickness in plane strain: length) whose product with
-  /// Young's modulus is the force scale of the convergence test: R0^2 (R0)
-  /// for contact, the loaded face of a block.
-  Real referenceArea = 1.0;
+  /// The force scale of the convergence test is Young's modulus times these
+  /// factors, multiplied in this order: R0, R0 for contact (R0 per unit
+  /// thickness in plane strain), the loaded face of a block.
+  std::vector<Real> areaFactors = {1.0};
+  Real forceScale(Real youngsModulus) const {
+    for (Real a : areaFactors) youngsModulus *= a;
+    return youngsModulus;
+  }
   std::vector<std::string> report;  ///< what the run's log says about the model
 };
 
@@ -78,10 +83,16 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 /// sublist describes (the Sphere Radius unless it is a sphere on a sphere).
 Real reducedRadius(const Teuchos::ParameterList& geometry);
 
+/// r_S0 of the interaction, asked for only when the bodies interact (the
+/// built-in contact geometries, gmsh meshes of several bodies), after the
+/// mesh's own checks: the interaction's parameters are read only then.
+using ContactDistance = std::function<Real()>;
+
 /// The model of a validated Geometry sublist. `contactDistance` (r_S0) puts
 /// u = 0 where the undeformed surfaces of interacting bodies are that far
 /// apart. Throws InputError for meshes and combinations the validators cannot
 /// reject (a body that can move rigidly, a missing node set, overlapping bodies, ...).
-Model buildModel(const Teuchos::ParameterList& geometry, Formulation formulation, Real contactDistance);
+Model buildModel(const Teuchos::ParameterList& geometry, Formulation formulation,
+                 const ContactDistance& contactDistance);
 
 }  // namespace cgcm::mesh
