@@ -59,7 +59,8 @@ void prepareOutput(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList&
 solver::LoadStepper::CheckpointSink checkpointSink(const std::string& dir, const Recorder& recorder,
                                                   RootGather& gather, const Real& lastLoad, bool root) {
   auto failed = std::make_shared<bool>(false);
-  return [&, dir, root, failed](const solver::StepperState& s, const Vector& state, const Vector& before) {
+  return [&recorder, &gather, &lastLoad, dir, root, failed](const solver::StepperState& s, const Vector& state,
+                                                           const Vector& before) {
     Checkpoint c;
     c.stepper = s;
     c.lastLoad = lastLoad;

@@ -70,7 +70,7 @@ TEST(MaterialParameters, ABodysBadOverrideIsNamedWithItsPath) {
   Teuchos::ParameterList text;
   text.set("Young's Modulus", std::string("stiff"));
   const std::string notANumber = refusal(text);
-  EXPECT_NE(notANumber.find("Bodies/tip/Young's Modulus"), std::string::npos) << notANumber;
+  EXPECT_NE(notANumber.find("Bodies/tip/Young's Modulus: \"stiff\" is not a number"), std::string::npos) << notANumber;
   Teuchos::ParameterList choice;
   choice.set("Kinematics", std::string("large strain"));
   const std::string notAChoice = refusal(choice);
