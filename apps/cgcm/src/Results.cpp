@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "cgcm/core/Error.hpp"
-#include "cgcm/fem/SolidKernel.hpp"
+#include "cgcm/fem/Dispatch.hpp"
 
 namespace cgcm::app {
 
@@ -117,7 +117,6 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
   out.push_back(&element["J"]);
   out.push_back(&element["von_mises"]);
   for (auto* o : out) o->reserve(mesh.numCells());
-  using namespace fem;
   for (const auto& b : mesh.blocks) {
     const material::NeoHookean& material = disc_.problem->material(b.body);
     const int npc = mesh::nodesPerCell(b.type);
@@ -126,14 +125,9 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
       Mat3 s;
       Real J = 0.0;
       bool ok = false;
-      switch (disc_.problem->formulation()) {
-        case Formulation::PlaneStrain: ok = cellStress<PlaneStrainQuad4>(mesh, nodes, u, material, s, J); break;
-        case Formulation::Axisymmetric: ok = cellStress<AxisymmetricQuad4>(mesh, nodes, u, material, s, J); break;
-        case Formulation::ThreeD:
-          ok = b.type == mesh::CellType::Hex8 ? cellStress<ThreeDHex8>(mesh, nodes, u, material, s, J)
-                                              : cellStress<ThreeDTet4>(mesh, nodes, u, material, s, J);
-          break;
-      }
+      fem::withSolidKernel(disc_.problem->formulation(), b.type, [&](auto kernel) {
+        ok = cellStress<decltype(kernel)>(mesh, nodes, u, material, s, J);
+      });
       const Real nan = std::numeric_limits<Real>::quiet_NaN();  // an inverted cell: no stress
       for (std::size_t k = 0; k < components.size(); ++k) out[k]->push_back(ok ? s.a[components[k].i][components[k].j] : nan);
       out[components.size()]->push_back(ok ? J : nan);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cgcm/core/Error.hpp"
-#include "cgcm/fem/SolidKernel.hpp"
+#include "cgcm/fem/Dispatch.hpp"
 
 namespace cgcm::assembly {
 
@@ -89,11 +89,10 @@ BulkPart::BulkPart(const DofMap& dofs, const mesh::Mesh& mesh, int body, Formula
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     const auto& blk = mesh.blocks[b];
     if (blk.body != body) continue;
-    const bool fits = (dim_ == 2 && blk.type == mesh::CellType::Quad4) ||
-                      (dim_ == 3 && (blk.type == mesh::CellType::Hex8 || blk.type == mesh::CellType::Tet4));
-    if (!fits)
+    if (!fem::solidKernelTakes(formulation, blk.type))
       throw InputError(std::string("element block \"") + blk.name + "\" has " + mesh::cellTypeName(blk.type) +
-                       " cells, which the " + formulationName(formulation) + " formulation does not support");
+                       " cells, which the " + formulationName(formulation) + " formulation does not support (it takes " +
+                       fem::cellTypesTakenBy(formulation) + ")");
     const auto& cells = dofs.localCells(b);
     const int nn = mesh::nodesPerCell(blk.type);
     Block d;
@@ -141,24 +140,12 @@ void BulkPart::setColumnMap(const Map& columns) {
 
 BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J,
                                           bool sortedRows) const {
-  using namespace fem;
   CellFailures out;
   for (const auto& b : blocks_) {
     BlockFailures bf;
-    switch (formulation_) {
-      case Formulation::PlaneStrain:
-        bf = assembleBlock<SolidKernel<PlaneStrain, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
-        break;
-      case Formulation::Axisymmetric:
-        bf = assembleBlock<SolidKernel<Axisymmetric, Quad4>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
-        break;
-      case Formulation::ThreeD:
-        if (b.type == mesh::CellType::Hex8)
-          bf = assembleBlock<SolidKernel<ThreeD, Hex8>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
-        else
-          bf = assembleBlock<SolidKernel<ThreeD, Tet4>>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
-        break;
-    }
+    fem::withSolidKernel(formulation_, b.type, [&](auto kernel) {
+      bf = assembleBlock<decltype(kernel)>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
+    });
     if (bf.count > 0 && out.first.empty()) {
       const LocalIndex c = bf.first;
       std::ostringstream where;

@@ -17,6 +17,20 @@ namespace {
 
 std::string where() { return "volume pair interaction: "; }
 
+// The cells whose points the quadrature places: those with shape functions, tensor-product cells
+// in 2D and 3D, simplices in 3D (split into four hexahedra; see tetSubHexPoint).
+bool volumeQuadratureTakes(CellType type, int dim) {
+  const CellTypeInfo& row = cellTypeInfo(type);
+  return row.dim == dim && (!row.simplex || dim == 3) && fem::withElement(type, [](auto) {});
+}
+
+std::string cellTypesTaken(int dim) {
+  std::string out;
+  for (const CellTypeInfo& row : kCellTypes)
+    if (volumeQuadratureTakes(row.type, dim)) out += (out.empty() ? "" : ", ") + std::string(row.name);
+  return out;
+}
+
 }  // namespace
 
 VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> densities,
@@ -52,11 +66,9 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
   std::vector<char> used(numNodes_, 0);
   LocalIndex cell = 0;
   for (const auto& block : mesh.blocks) {
-    const bool ok = dim_ == 2 ? block.type == mesh::CellType::Quad4
-                              : block.type == mesh::CellType::Hex8 || block.type == mesh::CellType::Tet4;
-    if (!ok)
+    if (!volumeQuadratureTakes(block.type, dim_))
       throw InputError(where() + "block \"" + block.name + "\" has " + mesh::cellTypeName(block.type) +
-                       " cells; the method takes Quad4 in 2D, Hex8 and Tet4 in 3D");
+                       " cells; the method takes " + cellTypesTaken(dim_) + " in " + std::to_string(dim_) + "D");
     const int nn = mesh::nodesPerCell(block.type);
     for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
       for (int a = 0; a < kMaxCellNodes; ++a) cellNodes(cell, a) = a < nn ? block.connectivity[std::size_t(c) * nn + a] : -1;
@@ -179,12 +191,12 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
   summary_.maxOrderUsed = 0;
   summary_.numAtMaxOrder = 0;
   summary_.minCellGap = std::numeric_limits<Real>::infinity();
-  const int tet = int(mesh::CellType::Tet4);
   for (const Candidate& c : candidates(coords, cutoff + skin)) {
     if (!rowCells_.empty() && !rowCells_[c.rowCell]) continue;
     const int extra = int(std::ceil(c.size / std::max(c.gap, 0.5 * r0)));
     // a tetrahedron's rule holds kMaxTetOrder^3 points on each of its four hexahedra
-    const int cap = view_.cellType(c.rowCell) == tet || view_.cellType(c.colCell) == tet
+    const int cap = cellTypeInfo(CellType(view_.cellType(c.rowCell))).simplex ||
+                            cellTypeInfo(CellType(view_.cellType(c.colCell))).simplex
                         ? std::min(maxOrder_, kMaxTetOrder)
                         : maxOrder_;
     const int order = std::min(cap, options_.quadratureOrder + extra);

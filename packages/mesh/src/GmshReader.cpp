@@ -123,15 +123,28 @@ const char* entityKind(int dim) {
 
 // gmsh element type -> cell type of a body of dimension `dim` (false if unsupported).
 bool cellTypeOf(int gmshType, int dim, CellType& type) {
-  if (dim == 2 && gmshType == 3) return type = CellType::Quad4, true;
-  if (dim == 3 && gmshType == 5) return type = CellType::Hex8, true;
-  if (dim == 3 && gmshType == 4) return type = CellType::Tet4, true;
+  for (const CellTypeInfo& row : kCellTypes)
+    if (row.dim == dim && row.gmshType == gmshType) return type = row.type, true;
   return false;
 }
 
-// Element types allowed in lower-dimensional groups: point, line 2, triangle 3, quadrangle 4.
+// The gmsh names of the cell types of dimension `dim`, for messages: "A" and "B".
+std::string supportedGmshTypes(int dim) {
+  std::vector<std::string> names;
+  for (const CellTypeInfo& row : kCellTypes)
+    if (row.dim == dim) names.push_back(std::string("\"") + row.gmshName + "\"");
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return out;
+}
+
+// Element types allowed in lower-dimensional groups: points, and the facets of the cell types.
 bool boundaryTypeAllowed(int gmshType, int dim) {
-  return (dim == 0 && gmshType == 15) || (dim == 1 && gmshType == 1) || (dim == 2 && (gmshType == 2 || gmshType == 3));
+  if (dim == 0) return gmshType == 15;
+  for (const CellTypeInfo& row : kCellTypes)
+    if (row.dim == dim + 1 && row.gmshFacetType == gmshType) return true;
+  return false;
 }
 
 Real det3(const Real a[3], const Real b[3], const Real c[3]) {
@@ -144,35 +157,32 @@ int orientation(const Mesh& m, CellType type, const LocalIndex* c) {
   auto edge = [&](int from, int to, Real e[3]) {
     for (int i = 0; i < 3; ++i) e[i] = i < m.dim ? m.coord(c[to], i) - m.coord(c[from], i) : 0.0;
   };
-  std::vector<Real> jac;
-  Real a[3], b[3], d[3];
-  if (type == CellType::Quad4) {
-    for (int k = 0; k < 4; ++k) {
-      edge(k, (k + 1) % 4, a), edge(k, (k + 3) % 4, b);
-      jac.push_back(a[0] * b[1] - a[1] * b[0]);
+  const CellTypeInfo& row = cellTypeInfo(type);
+  int positive = 0, negative = 0;
+  for (int k = 0; k < row.numCorners; ++k) {
+    const int* corner = row.corners[k];
+    Real a[3], b[3], d[3];
+    edge(corner[0], corner[1], a), edge(corner[0], corner[2], b);
+    Real jac;
+    if (row.dim == 2) {
+      jac = a[0] * b[1] - a[1] * b[0];
+    } else {
+      edge(corner[0], corner[3], d);
+      jac = det3(a, b, d);
     }
-  } else if (type == CellType::Tet4) {
-    edge(0, 1, a), edge(0, 2, b), edge(0, 3, d);
-    jac.push_back(det3(a, b, d));
-  } else {
-    // the three edges at each corner, right-handed for a positively ordered hex
-    static const int corner[8][4] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
-                                     {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
-    for (const auto& k : corner) {
-      edge(k[0], k[1], a), edge(k[0], k[2], b), edge(k[0], k[3], d);
-      jac.push_back(det3(a, b, d));
-    }
+    positive += jac > 0.0, negative += jac < 0.0;
   }
-  if (std::all_of(jac.begin(), jac.end(), [](Real j) { return j > 0.0; })) return 1;
-  if (std::all_of(jac.begin(), jac.end(), [](Real j) { return j < 0.0; })) return -1;
+  if (positive == row.numCorners) return 1;
+  if (negative == row.numCorners) return -1;
   return 0;
 }
 
 // Mirrors a cell's node order (reverses its orientation).
 void mirror(CellType type, LocalIndex* c) {
-  if (type == CellType::Quad4) std::swap(c[1], c[3]);
-  if (type == CellType::Tet4) std::swap(c[1], c[2]);
-  if (type == CellType::Hex8) std::swap(c[1], c[3]), std::swap(c[5], c[7]);
+  const CellTypeInfo& row = cellTypeInfo(type);
+  LocalIndex copy[kMaxCellNodes];
+  std::copy(c, c + row.numNodes, copy);
+  for (int a = 0; a < row.numNodes; ++a) c[a] = copy[row.reflected[a]];
 }
 
 struct Group {
@@ -266,7 +276,7 @@ class Extractor {
           CellType type;
           if (!cellTypeOf(types[t], dim_, type))
             fail("physical group " + inQuotes(g.name) + " has elements of type " + inQuotes(elementTypeName(types[t])) +
-                 "; supported are " + (dim_ == 2 ? "\"Quadrilateral 4\"" : "\"Hexahedron 8\" and \"Tetrahedron 4\""));
+                 "; supported are " + supportedGmshTypes(dim_));
           if (body.typed && type != body.type)
             fail("body " + inQuotes(g.name) + " mixes " + inQuotes(elementTypeName(body.gmshType)) + " and " +
                  inQuotes(elementTypeName(types[t])) + " elements; one element type per body");
@@ -334,8 +344,12 @@ class Extractor {
         owner[n] = b.body;
         b.connectivity.push_back(n);
       }
+      const CellTypeInfo& row = cellTypeInfo(raw.type);
       for (LocalIndex c = 0; c < b.numCells(); ++c) {
         LocalIndex* cell = &b.connectivity[std::size_t(c) * npc];
+        LocalIndex inGmshOrder[kMaxCellNodes];
+        std::copy(cell, cell + npc, inGmshOrder);
+        for (int a = 0; a < npc; ++a) cell[a] = inGmshOrder[row.fromGmsh[a]];
         const int sign = orientation(m, raw.type, cell);
         if (sign < 0) mirror(raw.type, cell);
         if (sign == 0)

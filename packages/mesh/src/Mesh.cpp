@@ -4,35 +4,16 @@
 
 namespace cgcm::mesh {
 
-int nodesPerCell(CellType type) {
-  switch (type) {
-    case CellType::Quad4: return 4;
-    case CellType::Hex8: return 8;
-    case CellType::Tet4: return 4;
-  }
-  return 0;
-}
-
-const char* cellTypeName(CellType type) {
-  switch (type) {
-    case CellType::Quad4: return "QUAD4";
-    case CellType::Hex8: return "HEX8";
-    case CellType::Tet4: return "TETRA4";
-  }
-  return "?";
-}
-
 const std::vector<std::vector<int>>& localFacets(CellType type) {
-  static const std::vector<std::vector<int>> quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const std::vector<std::vector<int>> hex = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                                                    {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> tet = {{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
-  switch (type) {
-    case CellType::Quad4: return quad;
-    case CellType::Hex8: return hex;
-    case CellType::Tet4: return tet;
-  }
-  return quad;
+  static const auto all = [] {
+    std::vector<std::vector<std::vector<int>>> out;
+    for (const CellTypeInfo& row : kCellTypes) {
+      auto& facets = out.emplace_back();
+      for (int f = 0; f < row.numFacets; ++f) facets.emplace_back(row.facets[f], row.facets[f] + row.nodesPerFacet);
+    }
+    return out;
+  }();
+  return all[static_cast<std::size_t>(type)];
 }
 
 LocalIndex Mesh::numCells() const {

@@ -11,13 +11,13 @@ namespace cgcm::mesh {
 
 namespace {
 
-// Node order of the reflected cell or facet that keeps its orientation.
-const std::vector<int>& reflectedOrder(int nodes, bool facet, int dim) {
-  static const std::vector<int> segment{1, 0}, triangle{0, 2, 1}, quad{0, 3, 2, 1}, tet{0, 2, 1, 3},
-      hex{0, 3, 2, 1, 4, 7, 6, 5};
-  if (facet) return nodes == 2 ? segment : nodes == 3 ? triangle : quad;
-  if (nodes == 4) return dim == 2 ? quad : tet;
-  return hex;
+// Node order of a reflected facet of `nodes` nodes that keeps its orientation
+// (the facets of the cell types of dimension dim).
+const int* reflectedFacetOrder(int nodes, int dim) {
+  for (const CellTypeInfo& row : kCellTypes)
+    if (row.dim == dim && row.nodesPerFacet == nodes) return row.reflectedFacet;
+  throw std::logic_error("mesh::mirror: no cell type of dimension " + std::to_string(dim) + " has facets of " +
+                         std::to_string(nodes) + " nodes");
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ void mirror(Mesh& mesh, int axis, Real tolerance) {
   for (std::size_t bi = 0; bi < blocksBefore; ++bi) {
     ElementBlock img = mesh.blocks[bi];
     const int npc = nodesPerCell(img.type);
-    const auto& order = reflectedOrder(npc, false, mesh.dim);
+    const int* order = cellTypeInfo(img.type).reflected;
     const auto& src = mesh.blocks[bi].connectivity;
     for (std::size_t c = 0; c < src.size() / npc; ++c)
       for (int a = 0; a < npc; ++a) img.connectivity[c * npc + a] = image[src[c * npc + order[a]]];
@@ -98,8 +98,8 @@ void mirror(Mesh& mesh, int axis, Real tolerance) {
     dst.body = imageBody[b];
     dst.nodesPerFacet = src.nodesPerFacet;
     const int npf = src.nodesPerFacet;
-    if (npf == 0) continue;
-    const auto& order = reflectedOrder(npf, true, mesh.dim);
+    if (npf == 0 || src.facets.empty()) continue;
+    const int* order = reflectedFacetOrder(npf, mesh.dim);
     for (LocalIndex f = 0; f < src.numFacets(); ++f) {
       const LocalIndex* nodes = &src.facets[std::size_t(f) * npf];
       bool inPlane = true;

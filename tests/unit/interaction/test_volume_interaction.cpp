@@ -197,7 +197,7 @@ TEST(VolumePairLaw, DerivativesMatchFiniteDifferences) {
 
 /// A structured block of nx x ny (x nz) cells on [x0, x0 + lx] x ..., its
 /// cells of `type`, perturbed by `jitter` times the cell size.
-void addBlock(mesh::Mesh& m, int body, mesh::CellType type, const Real origin[3], const Real size[3],
+void addBlock(mesh::Mesh& m, int body, CellType type, const Real origin[3], const Real size[3],
               const int cells[3], Real jitter, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
@@ -229,7 +229,7 @@ void addBlock(mesh::Mesh& m, int body, mesh::CellType type, const Real origin[3]
         const LocalIndex h[8] = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),
                                  id(i, j + 1, k),     id(i, j, k + 1),         id(i + 1, j, k + 1),
                                  id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
-        if (type == mesh::CellType::Hex8) {
+        if (type == CellType::Hex8) {
           b.connectivity.insert(b.connectivity.end(), h, h + 8);
         } else {
           // six positively oriented tetrahedra around the diagonal 0-6
@@ -247,7 +247,7 @@ struct TwoBodies {
   Formulation formulation;
 };
 
-TwoBodies twoBodies(Formulation f, mesh::CellType type) {
+TwoBodies twoBodies(Formulation f, CellType type) {
   TwoBodies t;
   t.formulation = f;
   t.mesh.dim = f == Formulation::ThreeD ? 3 : 2;
@@ -257,7 +257,7 @@ TwoBodies twoBodies(Formulation f, mesh::CellType type) {
   const int c2[3] = {2, 2, 1}, c3[3] = {2, 1, 2}, c1[3] = {1, 1, 1};
   const Real o0[3] = {0.2, 0.0, 0.0}, s0[3] = {1.0, 0.6, 0.8};
   const Real o1[3] = {0.5, 0.95, 0.1}, s1[3] = {1.1, 0.7, 0.9};
-  const int* cells = t.mesh.dim == 2 ? c2 : type == mesh::CellType::Tet4 ? c1 : c3;
+  const int* cells = t.mesh.dim == 2 ? c2 : type == CellType::Tet4 ? c1 : c3;
   addBlock(t.mesh, 0, type, o0, s0, cells, 0.08, 1);
   addBlock(t.mesh, 1, type, o1, s1, cells, 0.08, 2);
   return t;
@@ -288,7 +288,7 @@ Assembled assemble(VolumeInteraction& vi, const std::vector<Real>& x, bool tange
   return out;
 }
 
-void checkKernel(Formulation f, mesh::CellType type, Real r0, const std::string& potential = "lennard-jones") {
+void checkKernel(Formulation f, CellType type, Real r0, const std::string& potential = "lennard-jones") {
   TwoBodies t = twoBodies(f, type);
   VolumeInteractionOptions o;
   o.formulation = f;
@@ -328,17 +328,17 @@ void checkKernel(Formulation f, mesh::CellType type, Real r0, const std::string&
   }
 }
 
-TEST(VolumeInteraction, PlaneStrainForcesTangentAndBalance) { checkKernel(Formulation::PlaneStrain, mesh::CellType::Quad4, 0.3); }
+TEST(VolumeInteraction, PlaneStrainForcesTangentAndBalance) { checkKernel(Formulation::PlaneStrain, CellType::Quad4, 0.3); }
 TEST(VolumeInteraction, AxisymmetricForcesTangentAndBalance) {
-  checkKernel(Formulation::Axisymmetric, mesh::CellType::Quad4, 0.3);
+  checkKernel(Formulation::Axisymmetric, CellType::Quad4, 0.3);
 }
-TEST(VolumeInteraction, Hex8ForcesTangentAndBalance) { checkKernel(Formulation::ThreeD, mesh::CellType::Hex8, 0.3); }
-TEST(VolumeInteraction, Tet4ForcesTangentAndBalance) { checkKernel(Formulation::ThreeD, mesh::CellType::Tet4, 0.3); }
+TEST(VolumeInteraction, Hex8ForcesTangentAndBalance) { checkKernel(Formulation::ThreeD, CellType::Hex8, 0.3); }
+TEST(VolumeInteraction, Tet4ForcesTangentAndBalance) { checkKernel(Formulation::ThreeD, CellType::Tet4, 0.3); }
 TEST(VolumeInteraction, MorseForcesTangentAndBalance) {
   // a potential with neither line nor ring law in closed form: the generic quadratures
-  checkKernel(Formulation::PlaneStrain, mesh::CellType::Quad4, 0.3, "morse");
-  checkKernel(Formulation::Axisymmetric, mesh::CellType::Quad4, 0.3, "morse");
-  checkKernel(Formulation::ThreeD, mesh::CellType::Hex8, 0.3, "morse");
+  checkKernel(Formulation::PlaneStrain, CellType::Quad4, 0.3, "morse");
+  checkKernel(Formulation::Axisymmetric, CellType::Quad4, 0.3, "morse");
+  checkKernel(Formulation::ThreeD, CellType::Hex8, 0.3, "morse");
 }
 
 TEST(VolumeInteraction, QuadratureOfACellIntegratesItsVolume) {
@@ -348,8 +348,8 @@ TEST(VolumeInteraction, QuadratureOfACellIntegratesItsVolume) {
   m.dim = 3;
   const Real o0[3] = {0, 0, 0}, s0[3] = {1, 1, 1}, o1[3] = {1000, 0, 0}, s1[3] = {2, 1, 1};
   const int c[3] = {1, 1, 1};
-  addBlock(m, 0, mesh::CellType::Tet4, o0, s0, c, 0.0, 1);
-  addBlock(m, 1, mesh::CellType::Hex8, o1, s1, c, 0.0, 2);
+  addBlock(m, 0, CellType::Tet4, o0, s0, c, 0.0, 1);
+  addBlock(m, 1, CellType::Hex8, o1, s1, c, 0.0, 2);
   VolumeInteractionOptions o;
   o.formulation = Formulation::ThreeD;
   o.cutoff = 1e4;
@@ -371,10 +371,10 @@ TEST(VolumeInteraction, TetrahedronRuleIsSymmetric) {
     m.dim = 3;
     const Real o1[3] = {-1.0, -0.5, 0.0}, s1[3] = {2.0, 1.5, 1.2};
     const int c[3] = {2, 2, 2};
-    addBlock(m, 1, mesh::CellType::Hex8, o1, s1, c, 0.0, 1);
+    addBlock(m, 1, CellType::Hex8, o1, s1, c, 0.0, 1);
     mesh::ElementBlock b;
     b.body = 0;
-    b.type = mesh::CellType::Tet4;
+    b.type = CellType::Tet4;
     for (int a = 0; a < 4; ++a) {
       b.connectivity.push_back(m.numNodes());
       for (int i = 0; i < 3; ++i) m.coords.push_back((i == 0 ? sx : 1.0) * tet[order[a]][i]);
@@ -399,7 +399,7 @@ TEST(VolumeInteraction, TetrahedronRuleIsSymmetric) {
 TEST(VolumeInteraction, RowCellsSplitThePairsBetweenRanks) {
   // two "ranks" listing the pairs of alternate cells add up to one listing all;
   // a Tet4 pair stays within the tetrahedron rule's order
-  TwoBodies t = twoBodies(Formulation::ThreeD, mesh::CellType::Tet4);
+  TwoBodies t = twoBodies(Formulation::ThreeD, CellType::Tet4);
   VolumeInteractionOptions o;
   o.formulation = Formulation::ThreeD;
   o.cutoff = 1e3;
@@ -427,7 +427,7 @@ TEST(VolumeInteraction, RowCellsSplitThePairsBetweenRanks) {
 }
 
 TEST(VolumeInteraction, RejectsBadInput) {
-  TwoBodies t = twoBodies(Formulation::PlaneStrain, mesh::CellType::Quad4);
+  TwoBodies t = twoBodies(Formulation::PlaneStrain, CellType::Quad4);
   auto pot = std::make_shared<LennardJones>(1.0, 0.3);
   VolumeInteractionOptions o;
   o.formulation = Formulation::ThreeD;
@@ -442,7 +442,7 @@ TEST(VolumeInteraction, RejectsBadInput) {
 }
 
 TEST(VolumeInteraction, PairListIsKeptWhileNodesMoveLessThanHalfTheSkin) {
-  TwoBodies t = twoBodies(Formulation::PlaneStrain, mesh::CellType::Quad4);
+  TwoBodies t = twoBodies(Formulation::PlaneStrain, CellType::Quad4);
   VolumeInteractionOptions o;
   o.formulation = Formulation::PlaneStrain;
   o.cutoff = 0.3;

@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/fem/Dispatch.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
@@ -474,6 +475,41 @@ Physical Surface("body:upper") = {2};
 )");
   const std::string e = errorOf(glued, dim(2));
   EXPECT_CONTAINS(e, "bodies \"body:lower\" and \"body:upper\" share the node");
+}
+
+
+// Each row's gmsh type, name and node order against gmsh's own description of
+// the element: node a of ours sits where gmsh puts its node fromGmsh[a] in the
+// parent cell (both use [-1, 1]^d for tensor cells and the unit simplex).
+TEST(CellTypeTableAgainstGmsh, TypeNameAndNodeOrder) {
+  gmsh::initialize(0, nullptr, false);
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    std::string name;
+    int dim = 0, order = 0, numNodes = 0, numPrimary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(row.gmshType, name, dim, order, numNodes, local, numPrimary);
+    EXPECT_EQ(name, row.gmshName);
+    EXPECT_EQ(dim, row.dim);
+    ASSERT_EQ(numNodes, row.numNodes);
+    ASSERT_EQ(local.size(), std::size_t(dim) * std::size_t(numNodes));  // dim coordinates per node
+    std::string facetName;
+    int facetDim = 0;
+    std::vector<double> facetLocal;
+    gmsh::model::mesh::getElementProperties(row.gmshFacetType, facetName, facetDim, order, numNodes, facetLocal,
+                                            numPrimary);
+    EXPECT_EQ(facetDim, row.dim - 1);
+    EXPECT_EQ(numNodes, row.nodesPerFacet) << facetName;
+    fem::withElement(row.type, [&](auto element) {
+      using E = decltype(element);
+      for (int a = 0; a < E::numNodes; ++a) {
+        Real xi[E::dim];
+        E::parentCoordinates(a, xi);
+        for (int i = 0; i < E::dim; ++i) EXPECT_EQ(xi[i], local[std::size_t(E::dim) * std::size_t(row.fromGmsh[a]) + i]) << "node " << a;
+      }
+    });
+  }
+  gmsh::finalize();
 }
 
 }  // namespace

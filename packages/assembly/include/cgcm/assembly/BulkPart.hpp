@@ -51,7 +51,7 @@ class BulkPart {
 
  private:
   struct Block {
-    mesh::CellType type;
+    CellType type;
     int numNodes;
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> dofLids;  // [cell][a*dim+i], overlap local ids
     Kokkos::View<LocalIndex**, Kokkos::LayoutRight> colLids;  // [cell][a*dim+i], matrix column ids

@@ -3,6 +3,7 @@
 // derivatives, and the element's volume quadrature rule.
 //
 // Every element type E offers
+//   static constexpr CellType cellType;                               its row of core/CellType.hpp
 //   static constexpr int numNodes, numQp, dim;
 //   static void parentCoordinates(int a, Real (&xi)[dim]);          node a in the parent domain
 //   static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]);
@@ -18,6 +19,7 @@
 //          ordering (x1−x0)·((x2−x0)×(x3−x0)) > 0.
 #include <Kokkos_Macros.hpp>
 
+#include "cgcm/core/CellType.hpp"
 #include "cgcm/core/Types.hpp"
 
 namespace cgcm::fem {
@@ -53,6 +55,7 @@ struct GaussPointsAtNodes : ShapeAtQuadraturePoints<E> {
 
 /// Bilinear quadrilateral, 2×2 Gauss quadrature.
 struct Quad4 : detail::GaussPointsAtNodes<Quad4> {
+  static constexpr CellType cellType = CellType::Quad4;
   static constexpr int numNodes = 4;
   static constexpr int numQp = 4;
   static constexpr int dim = 2;
@@ -77,6 +80,7 @@ struct Quad4 : detail::GaussPointsAtNodes<Quad4> {
 
 /// Trilinear hexahedron, 2×2×2 Gauss quadrature.
 struct Hex8 : detail::GaussPointsAtNodes<Hex8> {
+  static constexpr CellType cellType = CellType::Hex8;
   static constexpr int numNodes = 8;
   static constexpr int numQp = 8;
   static constexpr int dim = 3;
@@ -105,6 +109,7 @@ struct Hex8 : detail::GaussPointsAtNodes<Hex8> {
 
 /// Linear tetrahedron, one-point (centroid) quadrature.
 struct Tet4 : detail::ShapeAtQuadraturePoints<Tet4> {
+  static constexpr CellType cellType = CellType::Tet4;
   static constexpr int numNodes = 4;
   static constexpr int numQp = 1;
   static constexpr int dim = 3;

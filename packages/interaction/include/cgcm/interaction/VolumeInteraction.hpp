@@ -43,7 +43,7 @@
 #include <vector>
 
 #include "cgcm/core/Types.hpp"
-#include "cgcm/fem/Elements.hpp"
+#include "cgcm/fem/Dispatch.hpp"
 #include "cgcm/interaction/Method3Kernel.hpp"
 #include "cgcm/interaction/Interaction.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
@@ -58,7 +58,6 @@ constexpr int kMaxVolumeOrder2D = 12;
 constexpr int kMaxVolumeOrder3D = 6;
 constexpr int kMaxTetOrder = 4;
 constexpr int kMaxCellPoints = 256;  ///< 6^3 (Hex8), 4 x 4^3 (Tet4)
-constexpr int kMaxCellNodes = 8;
 
 struct VolumeInteractionOptions {
   Formulation formulation = Formulation::PlaneStrain;
@@ -129,7 +128,7 @@ struct CellPoints {
 
 struct VolumeMeshView {
   Kokkos::View<const LocalIndex* [kMaxCellNodes]> cellNodes;
-  Kokkos::View<const int*> cellType;  ///< mesh::CellType as int
+  Kokkos::View<const int*> cellType;  ///< CellType as int
   Kokkos::View<const int*> cellBody;
   Kokkos::View<const Real*> density;  ///< per body
   Kokkos::View<const Real*> refCoords;
@@ -183,7 +182,7 @@ template <int Dim, class Element>
 KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
                                          bool axisymmetric, CellPoints& out) {
   constexpr int nn = Element::numNodes;
-  constexpr bool tet = Dim == 3 && nn == 4;  // pairs with a Tet4 have order <= kMaxTetOrder
+  constexpr bool tet = cellTypeInfo(Element::cellType).simplex;  // pairs with a tetrahedron have order <= kMaxTetOrder
   out.numNodes = nn;
   out.count = 0;
   const Real beta0 = m.density(m.cellBody(cell));
@@ -237,14 +236,10 @@ KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cel
 template <int Dim>
 KOKKOS_INLINE_FUNCTION void cellPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
                                        bool axisymmetric, CellPoints& out) {
-  if constexpr (Dim == 2) {
-    tensorPoints<2, fem::Quad4>(m, cell, order, x, axisymmetric, out);
-  } else {
-    if (m.cellType(cell) == int(mesh::CellType::Hex8))
-      tensorPoints<3, fem::Hex8>(m, cell, order, x, false, out);
-    else
-      tensorPoints<3, fem::Tet4>(m, cell, order, x, false, out);
-  }
+  fem::withElement(CellType(m.cellType(cell)), [&](auto element) {
+    using E = decltype(element);
+    if constexpr (E::dim == Dim) tensorPoints<Dim, E>(m, cell, order, x, Dim == 2 && axisymmetric, out);
+  });
 }
 
 template <Formulation F, class P>

@@ -10,17 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "cgcm/core/CellType.hpp"
 #include "cgcm/core/Types.hpp"
 
 namespace cgcm::mesh {
 
-enum class CellType { Quad4, Hex8, Tet4 };
-
-int nodesPerCell(CellType type);
-const char* cellTypeName(CellType type);
+inline int nodesPerCell(CellType type) { return cellTypeInfo(type).numNodes; }
+/// The Exodus II name of the type ("QUAD4"), as messages use it.
+inline const char* cellTypeName(CellType type) { return cellTypeInfo(type).name; }
 /// Local facets of a cell (edges in 2D, faces in 3D) as local node indices,
 /// oriented outward as Surface documents, in Exodus II side order: side s
-/// (1-based) of a cell is entry s - 1.
+/// (1-based) of a cell is entry s - 1 (the rows of core/CellType.hpp).
 const std::vector<std::vector<int>>& localFacets(CellType type);
 
 /// Cells of one type belonging to one body.

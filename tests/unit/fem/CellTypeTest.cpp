@@ -1,0 +1,170 @@
+// The table of cell types (core/CellType.hpp) against the shape functions of
+// its elements, and the dispatch from (Formulation, CellType) to the kernels.
+// Each row is checked on its own parent cell, so a new row with a wrong
+// facet, reflection or corner list fails here before any mesh is read.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cgcm/fem/Dispatch.hpp"
+
+using namespace cgcm;
+
+namespace {
+
+using Point = std::array<Real, 3>;
+
+// The parent coordinates of every node of the element of `type`.
+std::vector<Point> parentNodes(CellType type) {
+  std::vector<Point> out;
+  const bool found = fem::withElement(type, [&](auto element) {
+    using E = decltype(element);
+    for (int a = 0; a < E::numNodes; ++a) {
+      Real xi[E::dim];
+      E::parentCoordinates(a, xi);
+      Point p{0.0, 0.0, 0.0};
+      for (int i = 0; i < E::dim; ++i) p[i] = xi[i];
+      out.push_back(p);
+    }
+  });
+  EXPECT_TRUE(found) << cellTypeInfo(type).name << " has no element";
+  return out;
+}
+
+Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Point cross(const Point& a, const Point& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Real dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// Jacobian signs at the row's corners of the nodes x: +1 all positive, -1 all negative, 0 mixed.
+int orientation(const CellTypeInfo& row, const std::vector<Point>& x) {
+  int positive = 0, negative = 0;
+  for (int k = 0; k < row.numCorners; ++k) {
+    const int* c = row.corners[k];
+    const Point a = minus(x[c[1]], x[c[0]]), b = minus(x[c[2]], x[c[0]]);
+    const Real j = row.dim == 2 ? a[0] * b[1] - a[1] * b[0] : dot(cross(a, b), minus(x[c[3]], x[c[0]]));
+    positive += j > 0.0, negative += j < 0.0;
+  }
+  return positive == row.numCorners ? 1 : negative == row.numCorners ? -1 : 0;
+}
+
+}  // namespace
+
+TEST(CellTypeTable, EveryRowHasItsElementAndAKernel) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    EXPECT_EQ(int(parentNodes(row.type).size()), row.numNodes);
+    int kernels = 0;
+    for (Formulation f : {Formulation::PlaneStrain, Formulation::Axisymmetric, Formulation::ThreeD})
+      kernels += fem::solidKernelTakes(f, row.type);
+    EXPECT_EQ(kernels, row.dim == 2 ? 2 : 1);
+  }
+}
+
+TEST(CellTypeTable, FacetsPointOutOfTheParentCell) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    const auto x = parentNodes(row.type);
+    Point centre{0.0, 0.0, 0.0};
+    for (const auto& p : x)
+      for (int i = 0; i < 3; ++i) centre[i] += p[i] / Real(x.size());
+    std::set<std::vector<int>> distinct;
+    for (int f = 0; f < row.numFacets; ++f) {
+      const int* n = row.facets[f];
+      Point facetCentre{0.0, 0.0, 0.0}, normal{0.0, 0.0, 0.0};
+      for (int a = 0; a < row.nodesPerFacet; ++a)
+        for (int i = 0; i < 3; ++i) facetCentre[i] += x[n[a]][i] / row.nodesPerFacet;
+      if (row.dim == 2) {
+        const Point t = minus(x[n[1]], x[n[0]]);
+        normal = {t[1], -t[0], 0.0};  // the body on the left of n0 -> n1
+      } else {
+        for (int a = 1; a + 1 < row.nodesPerFacet; ++a) {
+          const Point m = cross(minus(x[n[a]], x[n[0]]), minus(x[n[a + 1]], x[n[0]]));
+          for (int i = 0; i < 3; ++i) normal[i] += m[i];
+        }
+      }
+      EXPECT_GT(dot(normal, minus(facetCentre, centre)), 0.0) << "facet " << f << " points inward";
+      std::vector<int> nodes(n, n + row.nodesPerFacet);
+      std::sort(nodes.begin(), nodes.end());
+      distinct.insert(nodes);
+    }
+    EXPECT_EQ(int(distinct.size()), row.numFacets) << "a facet is listed twice";
+  }
+}
+
+TEST(CellTypeTable, ReflectionKeepsTheOrientationAndTheCornersSeeIt) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    const auto x = parentNodes(row.type);
+    EXPECT_EQ(orientation(row, x), 1);
+    // mirror in the first coordinate: the image cell in the table's order is positive again
+    std::vector<Point> image(x.size()), reordered(x.size());
+    for (std::size_t a = 0; a < x.size(); ++a) image[a] = {-x[a][0], x[a][1], x[a][2]};
+    EXPECT_EQ(orientation(row, image), -1);
+    for (int a = 0; a < row.numNodes; ++a) reordered[a] = image[row.reflected[a]];
+    EXPECT_EQ(orientation(row, reordered), 1);
+    // the reflected facet order reverses the facet's normal: the mirrored facet 0 points out of the image
+    const int* n = row.facets[0];
+    Point normal{0.0, 0.0, 0.0}, mirrored{0.0, 0.0, 0.0};
+    auto facetNormal = [&](const std::vector<Point>& p, const int* order, Point& out) {
+      if (row.dim == 2) {
+        const Point t = minus(p[n[order[1]]], p[n[order[0]]]);
+        out = {t[1], -t[0], 0.0};
+        return;
+      }
+      for (int a = 1; a + 1 < row.nodesPerFacet; ++a) {
+        const Point m = cross(minus(p[n[order[a]]], p[n[order[0]]]), minus(p[n[order[a + 1]]], p[n[order[0]]]));
+        for (int i = 0; i < 3; ++i) out[i] += m[i];
+      }
+    };
+    int identity[kMaxFacetNodes];
+    for (int a = 0; a < kMaxFacetNodes; ++a) identity[a] = a;
+    facetNormal(x, identity, normal);
+    facetNormal(image, row.reflectedFacet, mirrored);
+    EXPECT_NEAR(mirrored[0], -normal[0], 1e-14);
+    EXPECT_NEAR(mirrored[1], normal[1], 1e-14);
+    EXPECT_NEAR(mirrored[2], normal[2], 1e-14);
+  }
+}
+
+TEST(CellTypeTable, GmshOrderIsAPermutation) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    std::set<int> from(row.fromGmsh, row.fromGmsh + row.numNodes), reflected(row.reflected, row.reflected + row.numNodes);
+    EXPECT_EQ(int(from.size()), row.numNodes);
+    EXPECT_EQ(int(reflected.size()), row.numNodes);
+  }
+}
+
+TEST(SolidKernelDispatch, PicksTheKernelOfTheFormulationAndCell) {
+  struct Seen {
+    int numNodes, dim;
+    bool axisymmetric;
+  };
+  auto seen = [](Formulation f, CellType t) {
+    Seen s{-1, -1, false};
+    const bool called = fem::withSolidKernel(f, t, [&](auto kernel) {
+      using K = decltype(kernel);
+      s = {K::numNodes, K::dim, K::axisymmetric};
+    });
+    EXPECT_EQ(called, s.numNodes > 0);
+    return s;
+  };
+  EXPECT_EQ(seen(Formulation::PlaneStrain, CellType::Quad4).numNodes, 4);
+  EXPECT_FALSE(seen(Formulation::PlaneStrain, CellType::Quad4).axisymmetric);
+  EXPECT_TRUE(seen(Formulation::Axisymmetric, CellType::Quad4).axisymmetric);
+  EXPECT_EQ(seen(Formulation::ThreeD, CellType::Hex8).numNodes, 8);
+  EXPECT_EQ(seen(Formulation::ThreeD, CellType::Tet4).numNodes, 4);
+  EXPECT_EQ(seen(Formulation::ThreeD, CellType::Tet4).dim, 3);
+  // the pairs no kernel takes call nothing
+  EXPECT_EQ(seen(Formulation::ThreeD, CellType::Quad4).numNodes, -1);
+  EXPECT_EQ(seen(Formulation::PlaneStrain, CellType::Hex8).numNodes, -1);
+  EXPECT_EQ(seen(Formulation::Axisymmetric, CellType::Tet4).numNodes, -1);
+  EXPECT_EQ(fem::cellTypesTakenBy(Formulation::PlaneStrain), "QUAD4");
+  EXPECT_EQ(fem::cellTypesTakenBy(Formulation::ThreeD), "HEX8, TETRA4");
+}
