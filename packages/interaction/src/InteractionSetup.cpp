@@ -22,6 +22,9 @@ Teuchos::RCP<const ParameterList> validParameters() {
       help += std::string(help.empty() ? "" : "; ") + "\"" + e.deckName + "\": " + e.description;
     }
     inter->set("Potential", names.front(), help, choices(names));
+    for (const auto& e : potentialRegistry())
+      if (e.declareParameters)
+        e.declareParameters(inter->sublist(e.deckName, false, std::string("the ") + e.deckName + " potential's own parameters"));
     inter->set("Method", "half-space point",
                "\"half-space point\" (Method 3: each surface point against the other body as a half-space) or "
                "\"volume pair\" (Method 1: quadrature over pairs of cells of two bodies, the reference; cost grows "
@@ -104,6 +107,25 @@ ScalingParameters scalingFrom(const ParameterList& in, const ReferenceScales& sc
   return {in.get<double>("gammaL"), in.get<double>("gammaW")};
 }
 
+// The sublist of the chosen potential's own parameters; another potential's parameter set to
+// other than its default is refused (it would have no effect).
+ParameterList ownParameters(const ParameterList& in) {
+  const std::string chosen = in.get<std::string>("Potential");
+  const ParameterList& valid = *validParameters();
+  for (const auto& e : potentialRegistry()) {
+    if (!in.isSublist(e.deckName) || chosen == e.deckName || !valid.isSublist(e.deckName)) continue;
+    const ParameterList& given = in.sublist(e.deckName);
+    const ParameterList& declared = valid.sublist(e.deckName);
+    for (auto it = given.begin(); it != given.end(); ++it) {
+      const std::string& name = given.name(it);
+      if (declared.isParameter(name) && given.entry(it).getAny(false) == declared.getEntry(name).getAny(false)) continue;
+      throw InputError("Interaction/" + std::string(e.deckName) + "/" + name + " is set, but Interaction/Potential = \"" +
+                       chosen + "\"; it belongs to \"" + e.deckName + "\"");
+    }
+  }
+  return in.isSublist(chosen) ? in.sublist(chosen) : ParameterList();
+}
+
 }  // namespace
 
 InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& scales, Formulation formulation) {
@@ -111,7 +133,7 @@ InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& 
   const ScalingParameters gammas = scalingFrom(in, scales);
   const auto phys = interaction::fromScaling(gammas.gammaL, gammas.gammaW, scales.R0, scales.youngsModulus, beta0);
   InteractionSetup s;
-  s.potential = makePotential(in.get<std::string>("Potential"), phys.epsilon, phys.r0);
+  s.potential = makePotential(in.get<std::string>("Potential"), phys.epsilon, phys.r0, ownParameters(in));
   s.density = beta0;
   s.gammaL = gammas.gammaL;
   s.gammaW = gammas.gammaW;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
 #include "cgcm/interaction/Quadrature.hpp"
 
 namespace cgcm::interaction {
@@ -198,25 +199,32 @@ void RepulsiveLennardJones::halfSpaceWithDerivative(Real r, Real& value, Real& d
 
 const std::vector<PotentialEntry>& potentialRegistry() {
   static const std::vector<PotentialEntry> entries = {
-      {"Lennard-Jones", "adhesion and repulsion",
-       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
+      {"Lennard-Jones", "adhesion and repulsion", nullptr,
+       [](Real eps, Real r0, const Teuchos::ParameterList&) -> std::shared_ptr<const PairPotential> {
          return std::make_shared<LennardJones>(eps, r0);
        }},
-      {"repulsive", "its r^-12 part only: a smooth barrier",
-       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
+      {"repulsive", "its r^-12 part only: a smooth barrier", nullptr,
+       [](Real eps, Real r0, const Teuchos::ParameterList&) -> std::shared_ptr<const PairPotential> {
          return std::make_shared<RepulsiveLennardJones>(eps, r0);
        }},
-      {"Morse",
-       "exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = 6/r0 (Lennard-Jones's well depth, position and curvature)",
-       [](Real eps, Real r0) -> std::shared_ptr<const PairPotential> {
-         return std::make_shared<PlainPairPotential<MorsePair>>("morse", eps, r0,
-                                                                MorsePair::matchedToLennardJones(eps, r0));
+      {"Morse", "exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = Interaction/Morse/Width / r0",
+       [](Teuchos::ParameterList& own) {
+         own.set("Width", 6.0,
+                 "a r0 of the Morse potential (> 0): 6 matches Lennard-Jones's well depth, position and curvature; "
+                 "larger is a shorter range",
+                 validators::atLeast(1e-3));
+       },
+       [](Real eps, Real r0, const Teuchos::ParameterList& own) -> std::shared_ptr<const PairPotential> {
+         const MorsePair law = MorsePair::matchedToLennardJones(eps, r0);
+         return std::make_shared<PlainPairPotential<MorsePair>>(
+             "morse", eps, r0, MorsePair{law.eps, law.r0, law.a * own.get<double>("Width") / 6.0});
        }},
   };
   return entries;
 }
 
-std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0) {
+std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0,
+                                                   const Teuchos::ParameterList& own) {
   auto lower = [](std::string t) {
     for (char& c : t) c = char(std::tolower(static_cast<unsigned char>(c)));
     return t;
@@ -224,7 +232,17 @@ std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real
   const std::string wanted = lower(name) == "lj" ? "lennard-jones" : lower(name);
   std::string allowed;
   for (const PotentialEntry& e : potentialRegistry()) {
-    if (lower(e.deckName) == wanted) return e.make(epsilon, r0);
+    if (lower(e.deckName) == wanted) {
+      Teuchos::ParameterList declared(e.deckName), given(own);
+      if (e.declareParameters) e.declareParameters(declared);
+      given.setName(std::string("Interaction/") + e.deckName);
+      try {
+        given.validateParametersAndSetDefaults(declared);
+      } catch (const std::exception& err) {
+        throw InputError(std::string("pair potential \"") + e.deckName + "\": " + err.what());
+      }
+      return e.make(epsilon, r0, given);
+    }
     allowed += std::string(allowed.empty() ? "" : ", ") + "\"" + e.deckName + "\"";
   }
   throw InputError("pair potential: unknown name \"" + name + "\" (allowed: " + allowed + ")");

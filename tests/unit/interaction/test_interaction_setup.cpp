@@ -92,6 +92,41 @@ TEST(InteractionSetup, BadCombinationsAreRefusedWithTheParameterNamed) {
   EXPECT_NE(refusal(potential).find("Interaction/Potential = \"coulomb\": not a choice"), std::string::npos);
 }
 
+TEST(InteractionSetup, APotentialDeclaresAndReadsItsOwnParameters) {
+  // Morse's Width (a r0) lives in Interaction/Morse: the default 6 is Lennard-Jones's curvature,
+  // another value changes phi as exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = Width / r0 says.
+  Teuchos::ParameterList morse;
+  morse.set("Potential", std::string("Morse"));
+  const InteractionSetup matched = setUp(morse);
+  morse.sublist("Morse").set("Width", 9.0);
+  const InteractionSetup narrow = setUp(morse);
+  const Real eps = matched.potential->epsilon(), r0 = matched.potential->r0();
+  for (Real r : {0.9 * r0, r0, 1.3 * r0}) {
+    for (const auto& [s, a] : {std::pair{&matched, 6.0 / r0}, std::pair{&narrow, 9.0 / r0}}) {
+      const Real e = std::exp(-a * (r - r0));
+      EXPECT_NEAR(s->potential->phi(r), eps * e * (e - 2.0), 1e-13 * eps) << "a r0 = " << a * r0 << ", r = " << r;
+    }
+  }
+  // the parameter of a potential not chosen, and a parameter the potential does not declare, are refused
+  Teuchos::ParameterList stray;
+  stray.sublist("Morse").set("Width", 9.0);
+  EXPECT_NE(refusal(stray).find("Interaction/Morse/Width is set, but Interaction/Potential = \"Lennard-Jones\""),
+            std::string::npos)
+      << refusal(stray);
+  Teuchos::ParameterList unknown;
+  unknown.set("Potential", std::string("Morse"));
+  unknown.sublist("Morse").set("Depth", 2.0);
+  EXPECT_NE(refusal(unknown).find("Depth"), std::string::npos) << refusal(unknown);
+  Teuchos::ParameterList bad;
+  bad.set("Potential", std::string("Morse"));
+  bad.sublist("Morse").set("Width", -1.0);
+  EXPECT_NE(refusal(bad).find("Width"), std::string::npos) << refusal(bad);
+  // makePotential, outside a deck, checks the same list
+  Teuchos::ParameterList own;
+  own.set("Depth", 2.0);
+  EXPECT_THROW(makePotential("Morse", 1.0, 1.0, own), InputError);
+}
+
 TEST(InteractionSetup, ContactDistanceIsLennardJonesRS0OfTheSameR0ForEveryPotential) {
   for (const char* name : {"Lennard-Jones", "repulsive", "Morse"}) {
     Teuchos::ParameterList list;

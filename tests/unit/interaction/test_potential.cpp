@@ -70,7 +70,7 @@ TEST(KernelPotential, IsThePotentialTheKernelsEvaluate) {
   // every potential a deck can name: its kernel struct gives the same phi,
   // dphi and half-space law, and scales as strength * phi(r / b) / b^3
   for (const PotentialEntry& e : potentialRegistry()) {
-    const auto p = e.make(0.7, 1.3);
+    const auto p = makePotential(e.deckName, 0.7, 1.3);
     std::visit(
         [&](const auto& c) {
           const auto s = c.scaled(1.7, 1.4);
@@ -103,13 +103,13 @@ TEST(KernelPotential, PointLawDerivativesMatchFiniteDifferences) {
             EXPECT_NEAR(L.d2f, (Lp.df - Lm.df) / (2 * h), 1e-7 * (std::abs(L.d2f) + std::abs(L.df))) << e.deckName;
           }
         },
-        e.make(0.9, 1.1)->kernelPotential());
+        makePotential(e.deckName, 0.9, 1.1)->kernelPotential());
 }
 
 TEST(KernelPotential, HalfSpaceLawIsTheIntegralOfThePotential) {
   // every named potential's half-space law against the quadrature of its phi
   for (const PotentialEntry& e : potentialRegistry()) {
-    const auto p = e.make(0.9, 1.1);
+    const auto p = makePotential(e.deckName, 0.9, 1.1);
     for (Real h : {0.7, 1.0, 1.6, 3.0}) {
       const Real integral = halfSpaceByQuadrature(*p, h);
       EXPECT_NEAR(p->halfSpace(h), integral, 1e-9 * std::abs(integral)) << e.deckName << " h " << h;

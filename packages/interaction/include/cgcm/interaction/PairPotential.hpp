@@ -15,6 +15,8 @@
 // names it and gives the surface properties (r_S0, work of adhesion, peak
 // traction: numerical defaults, overridden by closed forms). A potential
 // with no closed forms of its own is a PlainPairPotential of its struct.
+#include <Teuchos_ParameterList.hpp>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -151,16 +153,24 @@ class PlainPairPotential final : public PairPotential {
 };
 
 /// The potentials a deck can name, in one place: a new potential is its class
-/// above and one entry here (the deck's choices and their help follow).
+/// above and one entry here (the deck's choices, its own parameters and their
+/// help follow).
 struct PotentialEntry {
   const char* deckName;     ///< Interaction/Potential value
   const char* description;  ///< for the deck's help
-  std::shared_ptr<const PairPotential> (*make)(Real epsilon, Real r0);
+  /// Declares the potential's own parameters, with defaults, help and validators, in the
+  /// sublist Interaction/<deckName>; null when it has none.
+  void (*declareParameters)(Teuchos::ParameterList& own);
+  /// The potential of energy epsilon and length r0; `own` holds its parameters, defaults set.
+  std::shared_ptr<const PairPotential> (*make)(Real epsilon, Real r0, const Teuchos::ParameterList& own);
 };
 const std::vector<PotentialEntry>& potentialRegistry();
 
 /// Factory by deck name, case-insensitive (the deck names lower-cased are the
-/// potentials' name(); "lj" also works). Throws InputError naming the allowed values.
-std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0);
+/// potentials' name(); "lj" also works). `own`: the potential's parameters
+/// (Interaction/<deckName>); what it leaves out takes the default, what the
+/// potential does not declare is refused. Throws InputError naming the allowed values.
+std::shared_ptr<const PairPotential> makePotential(const std::string& name, Real epsilon, Real r0,
+                                                   const Teuchos::ParameterList& own = Teuchos::ParameterList());
 
 }  // namespace cgcm::interaction
