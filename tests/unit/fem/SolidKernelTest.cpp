@@ -11,10 +11,11 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
-#include "cgcm/fem/SolidKernel.hpp"
+#include "cgcm/fem/Dispatch.hpp"
 
 using cgcm::Mat3;
 using cgcm::Real;
@@ -198,8 +199,18 @@ bool assemble(const Patch& p, const std::vector<std::array<Real, 3>>& x, const N
 template <class Kernel>
 class SolidKernelTest : public ::testing::Test {};
 
-using Kernels = ::testing::Types<SolidKernel<PlaneStrain, Quad4>, SolidKernel<Axisymmetric, Quad4>,
-                                 SolidKernel<ThreeD, Hex8>, SolidKernel<ThreeD, Tet4>>;
+// Every kernel fem::withSolidKernel dispatches to (the test below checks that none is missing).
+using KernelTuple = std::tuple<SolidKernel<PlaneStrain, Quad4>, SolidKernel<Axisymmetric, Quad4>,
+                               SolidKernel<ThreeD, Hex8>, SolidKernel<ThreeD, Tet4>>;
+template <class Tuple>
+struct TestTypesOf;
+template <class... K>
+struct TestTypesOf<std::tuple<K...>> {
+  using type = ::testing::Types<K...>;
+  template <class Kernel>
+  static constexpr bool holds = (std::is_same_v<Kernel, K> || ...);
+};
+using Kernels = TestTypesOf<KernelTuple>::type;
 
 struct KernelNames {
   template <class T>
@@ -211,6 +222,15 @@ struct KernelNames {
   }
 };
 TYPED_TEST_SUITE(SolidKernelTest, Kernels, KernelNames);
+
+TEST(SolidKernelCoverage, EveryKernelTheDispatchReachesIsTestedHere) {
+  for (const cgcm::CellTypeInfo& row : cgcm::kCellTypes)
+    for (cgcm::Formulation f : {cgcm::Formulation::PlaneStrain, cgcm::Formulation::Axisymmetric, cgcm::Formulation::ThreeD})
+      cgcm::fem::withSolidKernel(f, row.type, [&](auto kernel) {
+        EXPECT_TRUE(TestTypesOf<KernelTuple>::holds<decltype(kernel)>)
+            << cgcm::formulationName(f) << " x " << row.name << ": add its kernel to KernelTuple";
+      });
+}
 
 }  // namespace
 
