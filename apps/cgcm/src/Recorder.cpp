@@ -54,7 +54,7 @@ Real ContactProbe::contactRadius(const Vector& u) const {
 
 Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe,
                    const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
-                   const Checkpoint* resume)
+                   const solver::Checkpoint* resume)
     : setup_(setup), mesh_(*disc.mesh), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
       root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log), f_(disc.model->map()) {
   columns_ = {"step", "u"};

@@ -1,12 +1,11 @@
 #include "cgcm/app/Setup.hpp"
 
-#include "Distribution.hpp"
-
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
 
 #include "cgcm/app/SizeEstimate.hpp"
+#include "cgcm/core/Bytes.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/core/ParameterValidators.hpp"
 #include "cgcm/material/MaterialParameters.hpp"
@@ -150,8 +149,7 @@ interaction::ReferenceScales referenceScales(const ParameterList& deck, const ma
           mesh::reducedRadius(geometry)};
 }
 
-}  // namespace
-
+// What the deck alone gives (every rank builds it): formulation, material, partition.
 ProblemSetup setupFromDeck(const ParameterList& deck) {
   ProblemSetup s;
   s.formulation = parseFormulation(deck.sublist("Problem").get<std::string>("Formulation"));
@@ -162,8 +160,6 @@ ProblemSetup setupFromDeck(const ParameterList& deck) {
   return s;
 }
 
-namespace {
-
 // The interaction between the bodies: read when the model has interacting bodies (its r_S0 places u = 0).
 const interaction::InteractionSetup& readInteraction(const ParameterList& deck, ProblemSetup& s) {
   if (!s.interaction)
@@ -172,8 +168,8 @@ const interaction::InteractionSetup& readInteraction(const ParameterList& deck, 
   return *s.interaction;
 }
 
-}  // namespace
-
+// Joins a model to the deck's set-up: the force scale, the interaction when the bodies interact (read
+// from the deck if not yet) with its report lines, the model's lines.
 void attachModel(ProblemSetup& s, mesh::Model model, const ParameterList& deck) {
   s.forceScale = model.forceScale(s.material.youngsModulus());
   if (model.interacting) readInteraction(deck, s);  // ranks other than 0 read it here
@@ -188,6 +184,8 @@ void attachModel(ProblemSetup& s, mesh::Model model, const ParameterList& deck) 
   s.report.insert(s.report.end(), model.report.begin(), model.report.end());
   s.model = std::move(model);
 }
+
+}  // namespace
 
 ProblemSetup buildProblem(const ParameterList& deck) {
   ProblemSetup s = setupFromDeck(deck);
@@ -212,43 +210,47 @@ ProblemSetup buildProblem(const ParameterList& deck) {
 
 namespace {
 
-Discretization discretize(const Distribution& dist, const ProblemSetup& setup,
-                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
-  Discretization d;
-  d.mesh = dist.mesh;
-  d.dofs = dist.dofs;
-  d.problem = setup.bodyMaterials.empty()
-                  ? std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.material)
-                  : std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.bodyMaterials);
-  std::vector<ScalarParameter> parameters;
-  if (setup.interaction) {
-    const auto interaction = setup.interaction->create(*d.mesh);
-    d.problem->setInteraction(interaction, setup.interaction->searchRadiusFactor);
-    parameters = setup.interaction->scalarParameters(interaction);
-  }
-  d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
-  for (const auto& c : setup.model.conditions)
-    d.dirichlet->add(d.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
-  d.model = Teuchos::rcp(new solver::ModelEvaluator(d.problem, d.dirichlet, std::move(linearSolver),
-                                                    std::move(parameters)));
-  return d;
+// What rank 0's model and mesh add to the deck's set-up, without the mesh: the
+// other ranks make the rest from the deck themselves (setupFromDeck).
+std::vector<char> toBytes(const ProblemSetup& s) {
+  core::ByteWriter out;
+  mesh::put(out, s.model);
+  out.put(s.bodyMaterials);
+  out.put(std::uint64_t(s.report.size()));
+  for (const auto& line : s.report) out.put(line);
+  out.put(s.numNodes);
+  out.put(s.numCells);
+  return out.take();
+}
+
+ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vector<char>& bytes) {
+  core::ByteReader in(bytes);
+  ProblemSetup s = setupFromDeck(deck);
+  attachModel(s, mesh::getModel(in), deck);
+  s.bodyMaterials = in.getVector<material::NeoHookean>();
+  s.report.resize(in.getCount(sizeof(std::uint64_t)));  // rank 0's, the body materials' lines included
+  for (auto& line : s.report) line = in.getString();
+  s.numNodes = in.get<std::size_t>();
+  s.numCells = in.get<std::size_t>();
+  if (!in.atEnd()) throw std::logic_error("setupFromBytes: bytes left over");
+  return s;
 }
 
 }  // namespace
 
-Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
-                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
-  return discretize(distribute(comm, setup), setup, std::move(linearSolver));
-}
-
-Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
-                          const Teuchos::ParameterList& linearSolver) {
-  const auto dist = distribute(comm, setup);
-  const bool rigid = linearSolver.get<std::string>("MueLu Near Null Space") == "rigid body modes";
-  const auto modes = rigid ? assembly::rigidBodyModes(*dist.dofs, *dist.mesh, setup.formulation) : Teuchos::null;
-  return discretize(dist, setup,
-                    solver::buildLinearSolver(linearSolver, comm->getSize(), dist.dofs->dofsPerNode(), modes,
-                                              !setup.interaction.has_value()));
+ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck) {
+  if (comm.getSize() == 1) return buildProblem(deck);
+  ProblemSetup setup;
+  std::vector<char> bytes;
+  runOnRoot(comm, [&] {
+    setup = buildProblem(deck);
+    bytes = toBytes(setup);
+  });
+  solver::broadcastBytes(comm, bytes);
+  solver::decodeOnEveryRank(comm, [&] {
+    if (comm.getRank() != 0) setup = setupFromBytes(deck, bytes);
+  });
+  return setup;
 }
 
 }  // namespace cgcm::app

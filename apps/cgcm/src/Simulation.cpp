@@ -14,12 +14,12 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "cgcm/app/Checkpoint.hpp"
 #include "cgcm/app/Recorder.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/app/Summary.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/io/Deck.hpp"
+#include "cgcm/solver/Checkpoint.hpp"
 #include "cgcm/solver/Continuation.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
@@ -28,6 +28,8 @@
 namespace cgcm::app {
 
 using assembly::Vector;
+using solver::Checkpoint;
+using solver::RootGather;
 
 namespace {
 
@@ -69,9 +71,9 @@ solver::LoadStepper::CheckpointSink checkpointSink(const std::string& dir, const
     if (s.havePrevious) c.previous = gather.gather(before);
     if (!root) return;
     c.curve = recorder.curve;
-    if (!writeCheckpoint(dir, c) && !*failed) {
+    if (!solver::writeCheckpoint(dir, c) && !*failed) {
       *failed = true;
-      std::cerr << "cgcm: warning: cannot write " << checkpointPath(dir) << "; the run goes on without\n";
+      std::cerr << "cgcm: warning: cannot write " << solver::checkpointPath(dir) << "; the run goes on without\n";
     }
   };
 }
@@ -149,7 +151,14 @@ std::optional<Checkpoint> resumeOf(RunMode mode, const solver::PathPlan& plan, c
   if (!plan.follower().restartable() || plan.parameter() != "u")
     throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
                      "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
-  return readCheckpoint(dir);
+  try {
+    return solver::readCheckpoint(dir);
+  } catch (const solver::MissingCheckpoint& e) {
+    throw InputError("--restart " + dir + ": " + e.what() +
+                     ": the run recorded no state, or Output/Checkpoint was false");
+  } catch (const InputError& e) {
+    throw InputError("--restart " + dir + ": " + e.what());
+  }
 }
 
 // The solvers the path needs, and where a restart resumes.

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <fstream>
 
-#include "cgcm/app/PathAnalysis.hpp"
 #include "cgcm/core/HugePages.hpp"
+#include "cgcm/solver/PathAnalysis.hpp"
 
 namespace cgcm::app {
 
@@ -35,14 +35,14 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
       both(buf);
     }
   if (parameter == "u") {
-    const auto path = plan.follower().tracesUnstableBranches() ? displacementControlPath(c) : c;
-    for (const auto& j : jumpsOf(path)) {
+    const auto path = plan.follower().tracesUnstableBranches() ? solver::displacementControlPath(c) : c;
+    for (const auto& j : solver::jumpsOf(path)) {
       std::snprintf(buf, sizeof buf, "jump under displacement control at u = %.10g: P %.10g -> %.10g, gap %.6g -> %.6g\n",
                     j.from.u, j.from.P, j.to.P, j.from.gap, j.to.gap);
       both(buf);
     }
     std::snprintf(buf, sizeof buf, "hysteresis energy (loop of the displacement-controlled path) = %.10g\n",
-                  hysteresisEnergy(path));
+                  solver::hysteresisEnergy(path));
     both(buf);
   }
   int iterations = 0, unstable = 0;

@@ -2,7 +2,9 @@
 // Closed-form homogeneous states of the compressible Neo-Hookean solid.
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
+#include "cgcm/core/Types.hpp"
 #include "cgcm/material/NeoHookean.hpp"
 
 namespace cgcm::test {
@@ -33,5 +35,13 @@ inline double uniaxialCauchyStress(const material::NeoHookean& m, double axial, 
   const double J = axial * std::pow(l, nLateral);
   return (kirchhoffPressure(m, J) + m.mu * (axial * axial - 1.0)) / J;
 }
+
+// Number of free lateral directions and the loaded area factor of the unit block.
+inline double loadedArea(const std::string& formulation, double lateralStretch) {
+  if (formulation == "plane strain") return lateralStretch;                // width 1, unit thickness
+  if (formulation == "axisymmetric") return cgcm::kPi * lateralStretch * lateralStretch;  // disc of radius 1
+  return lateralStretch * lateralStretch;                                  // 1 x 1 face
+}
+inline int lateralDirections(const std::string& formulation) { return formulation == "plane strain" ? 1 : 2; }
 
 }  // namespace cgcm::test

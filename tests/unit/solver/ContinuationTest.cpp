@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "ChainModel.hpp"
-#include "cgcm/app/Setup.hpp"
+#include "TestSystem.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/solver/Continuation.hpp"
@@ -174,13 +174,13 @@ class FaultyModel : public solver::ModelEvaluator {
 
 TEST(LoadStepping, AnEvaluationErrorCutsTheStepBack) {
   auto d = Teuchos::rcp(new Teuchos::ParameterList("cgcm"));
-  io::applyOverrides(*d, *app::validParameters(),
+  io::applyOverrides(*d, *test::deckParameters(),
                      {"Geometry/Type=block", "Problem/Formulation=plane strain", "Loading/Approach Path={0, -0.2}",
                       "Loading/Initial Increment=0.1", "Loading/Max Increment=0.1"});
-  io::validateDeck(*d, *app::validParameters());
-  const auto setup = app::buildProblem(*d);
+  io::validateDeck(*d, *test::deckParameters());
+  const auto setup = test::setupOf(*d);
   auto comm = Tpetra::getDefaultComm();
-  auto disc = app::discretize(comm, setup, autoSolver());
+  auto disc = solver::discretize(comm, setup, autoSolver());
   auto model = Teuchos::rcp(new FaultyModel(disc.problem, disc.dirichlet, autoSolver()));
   solver::NewtonSettings settings;
   settings.forceScale = setup.forceScale;

@@ -2,13 +2,13 @@
 // derived from an arc-length curve with a known loop.
 #include <gtest/gtest.h>
 
-#include "cgcm/app/PathAnalysis.hpp"
+#include "cgcm/solver/PathAnalysis.hpp"
 
 namespace cgcm {
 namespace {
 
-app::LoadPoint row(double u, double P, bool stable, bool fold = false) {
-  app::LoadPoint p;
+solver::LoadPoint row(double u, double P, bool stable, bool fold = false) {
+  solver::LoadPoint p;
   p.u = u;
   p.P = P;
   p.stable = stable;
@@ -19,7 +19,7 @@ app::LoadPoint row(double u, double P, bool stable, bool fold = false) {
 // Approach and retraction of an S-shaped path: apart P = 0 up to the jump-in
 // fold at u = 1, the unstable branch back to the pull-off fold at u = 0.5,
 // in contact P = -1 from u = 0.5 to 2; then the same backwards.
-std::vector<app::LoadPoint> loop() {
+std::vector<solver::LoadPoint> loop() {
   return {row(0.0, 0.0, true),   row(0.5, 0.0, true),    row(1.0, 0.0, true, true),  row(0.75, -0.5, false),
           row(0.5, -1.0, true, true), row(1.0, -1.0, true), row(2.0, -1.0, true),      row(1.0, -1.0, true),
           row(0.5, -1.0, true, true), row(0.75, -0.5, false), row(1.0, 0.0, true, true), row(0.5, 0.0, true),
@@ -27,8 +27,8 @@ std::vector<app::LoadPoint> loop() {
 }
 
 TEST(PathAnalysis, JumpsOfALoopAndTheEnergyItDissipates) {
-  const auto path = app::displacementControlPath(loop());
-  const auto jumps = app::jumpsOf(path);
+  const auto path = solver::displacementControlPath(loop());
+  const auto jumps = solver::jumpsOf(path);
   ASSERT_EQ(jumps.size(), 2u);
   EXPECT_DOUBLE_EQ(jumps[0].from.u, 1.0);  // jump-in: from the fold apart ...
   EXPECT_DOUBLE_EQ(jumps[0].from.P, 0.0);
@@ -38,16 +38,16 @@ TEST(PathAnalysis, JumpsOfALoopAndTheEnergyItDissipates) {
   EXPECT_DOUBLE_EQ(jumps[1].to.P, 0.0);
   for (const auto& p : path) EXPECT_TRUE(p.stable);
   // The loop between the branches over 0.5 <= u <= 1, height 1.
-  EXPECT_NEAR(app::hysteresisEnergy(path), 0.5, 1e-14);
+  EXPECT_NEAR(solver::hysteresisEnergy(path), 0.5, 1e-14);
 }
 
 TEST(PathAnalysis, AStablePathHasNoJumpsAndNoHysteresis) {
-  std::vector<app::LoadPoint> curve;
+  std::vector<solver::LoadPoint> curve;
   for (int k = 0; k <= 10; ++k) curve.push_back(row(0.1 * k, -0.3 * k, true));
   for (int k = 9; k >= 0; --k) curve.push_back(row(0.1 * k, -0.3 * k, true));
-  const auto path = app::displacementControlPath(curve);
-  EXPECT_TRUE(app::jumpsOf(path).empty());
-  EXPECT_NEAR(app::hysteresisEnergy(path), 0.0, 1e-14);
+  const auto path = solver::displacementControlPath(curve);
+  EXPECT_TRUE(solver::jumpsOf(path).empty());
+  EXPECT_NEAR(solver::hysteresisEnergy(path), 0.0, 1e-14);
 }
 
 }  // namespace

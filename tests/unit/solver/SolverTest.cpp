@@ -11,11 +11,9 @@
 #include <cstdio>
 #include <random>
 #include <regex>
-#include <sstream>
 
 #include "ClosedForm.hpp"
-#include "cgcm/app/Setup.hpp"
-#include "cgcm/app/Simulation.hpp"
+#include "TestSystem.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
@@ -42,24 +40,24 @@ void expectThrowMatching(F&& call, const std::string& pattern) {
 // A block deck (the bulk problems of these tests) with the given overrides.
 RCP<ParameterList> deck(const std::vector<std::string>& overrides) {
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
-  io::applyOverrides(*d, *app::validParameters(), {"Geometry/Type=block"});
-  io::applyOverrides(*d, *app::validParameters(), overrides);
-  io::validateDeck(*d, *app::validParameters());
+  io::applyOverrides(*d, *test::deckParameters(), {"Geometry/Type=block"});
+  io::applyOverrides(*d, *test::deckParameters(), overrides);
+  io::validateDeck(*d, *test::deckParameters());
   return d;
 }
 
 // The assembled problem of a deck, ready for Newton.
 struct System {
-  app::ProblemSetup setup;
+  solver::ProblemSetup setup;
   std::shared_ptr<const mesh::Mesh> mesh;  ///< the mesh this rank assembles (its part on several ranks)
   RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
   std::shared_ptr<assembly::DirichletConditions> dirichlet;
   RCP<solver::ModelEvaluator> model;
 
-  explicit System(const ParameterList& d) : setup(app::buildProblem(d)) {
+  explicit System(const ParameterList& d) : setup(test::setupOf(d)) {
     auto comm = Tpetra::getDefaultComm();
-    auto disc = app::discretize(comm, setup, d.sublist("Solver").sublist("Linear Solver"));
+    auto disc = solver::discretize(comm, setup, d.sublist("Solver").sublist("Linear Solver"));
     mesh = disc.mesh;
     dofs = disc.dofs;
     problem = disc.problem;
@@ -79,43 +77,7 @@ solver::NewtonResult solveFromRest(System& sys, const solver::NewtonSettings& se
 
 const char* kFormulations[] = {"plane strain", "axisymmetric", "3D"};
 
-// Number of free lateral directions and the loaded area factor of the unit block.
-double loadedArea(const std::string& formulation, double lateralStretch) {
-  if (formulation == "plane strain") return lateralStretch;                // width 1, unit thickness
-  if (formulation == "axisymmetric") return cgcm::kPi * lateralStretch * lateralStretch;  // disc of radius 1
-  return lateralStretch * lateralStretch;                                  // 1 x 1 face
-}
-int lateralDirections(const std::string& formulation) { return formulation == "plane strain" ? 1 : 2; }
-
-TEST(LoadStepping, UniaxialCompressionMatchesClosedFormNeoHookean) {
-  // 30 % compression, roller faces: homogeneous state; P = sigma_zz * current area.
-  for (std::string form : kFormulations) {
-    for (std::string element : {"hex8", "tet4"}) {
-      if (form != "3D" && element == "tet4") continue;
-      for (std::string law : {"(Lambda/2)(ln J)^2", "(Lambda/4)(J^2-1-2 ln J)"}) {
-        SCOPED_TRACE(form + " " + element + " " + law);
-        auto d = deck({"Problem/Formulation=" + form, "Geometry/Block/Element=" + element,
-                       "Geometry/Block/Cells X=2", "Geometry/Block/Cells Y=3", "Geometry/Block/Cells Z=2",
-                       "Material/Poisson's Ratio=0.3", "Material/Volumetric Energy=" + law,
-                       "Loading/Approach Path={0, -0.3}", "Loading/Initial Increment=0.1",
-                       "Loading/Max Increment=0.1", "Output/Print Steps=false",
-                       "Output/Directory=" + std::string(CGCM_TEST_OUTPUT) + "/uniaxial"});
-        std::ostringstream log;
-        const auto run = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
-        ASSERT_TRUE(run.completed) << run.failure;
-        ASSERT_EQ(run.curve.size(), 4u);
-        const auto setup = app::buildProblem(*d);
-        for (const auto& pt : run.curve) {
-          double lateral = 1.0;
-          const double sigma = test::uniaxialCauchyStress(setup.material, 1.0 + pt.u, lateralDirections(form), lateral);
-          const double expected = sigma * loadedArea(form, lateral);
-          EXPECT_NEAR(pt.P, expected, 1e-9 * (1.0 + std::abs(expected))) << "u = " << pt.u;
-        }
-        EXPECT_LT(run.curve.back().P, -0.2);  // really compressed
-      }
-    }
-  }
-}
+using test::lateralDirections;
 
 TEST(LoadStepping, PatchTestOnDistortedMeshesReproducesHomogeneousDeformation) {
   for (std::string form : kFormulations) {
@@ -303,30 +265,9 @@ TEST(Newton, RelaxationEndsOnTheNewtonSolution) {
   }
 }
 
-TEST(Input, BadDecksStopWithMessagesNamingTheParameter) {
-  auto expectError = [](const std::vector<std::string>& overrides, const std::string& fragment) {
-    try {
-      auto d = deck(overrides);
-      app::buildProblem(*d);
-      solver::LoadPathSettings::fromParameters(d->sublist("Loading"));
-      ADD_FAILURE() << "no error for " << overrides.front();
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-  };
-  expectError({"Material/Poisson's Ratio=0.5"}, "Poisson's Ratio");
-  expectError({"Material/Young's Modulus=-1"}, "Young's Modulus");
-  expectError({"Problem/Formulation=2D"}, "Formulation");
-  expectError({"Geometry/Block/Cells X=0"}, "Cells X");
-  expectError({"Loading/Approach Path={0.1}"}, "Approach Path");
-  expectError({"Loading/Approach Path={0, 0.1, 0.2}"}, "Approach Path");
-  expectError({"Material/Youngs Modulus=1"}, "Youngs Modulus");
-  expectError({"Solver/Newton/Line Search=trust region"}, "Line Search");
-}
-
 TEST(RuntimeFaults, InvertedCellsAndNonFiniteResidualsAreReportedWithWhere) {
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
-  io::validateDeck(*d, *app::validParameters());
+  io::validateDeck(*d, *test::deckParameters());
   System sys(*d);
   const auto& dofs = sys.dofs;
   const auto& problem = sys.problem;
@@ -369,8 +310,8 @@ TEST(Interaction, UndeformedBenchmarkMeshGivesDerjaguinForceOnBothBodies) {
   // curvature correction of a polygonal sphere at R/r0 = 50 (-0.9837, computed
   // independently by quadrature of T(h(rho)) 2 pi rho over the same polyline).
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
-  io::validateDeck(*d, *app::validParameters());
-  const auto s = app::buildProblem(*d);
+  io::validateDeck(*d, *test::deckParameters());
+  const auto s = test::setupOf(*d);
   const auto& in = *s.interaction;
   const auto created = in.create(*s.model.mesh);
   auto& si = dynamic_cast<interaction::SurfaceInteraction&>(*created);
@@ -499,7 +440,7 @@ TEST(Interaction, EntriesOutsideTheGraphAreDetectedAndTheGraphRebuilt) {
   // evaluated with the sphere at the equilibrium gap: the interaction entries
   // would be dropped, so the evaluation must fail until the graph is refreshed.
   auto d = Teuchos::rcp(new ParameterList("cgcm"));
-  io::validateDeck(*d, *app::validParameters());
+  io::validateDeck(*d, *test::deckParameters());
   System sys(*d);
   const auto& dofs = sys.dofs;
   const auto& problem = sys.problem;
@@ -530,8 +471,8 @@ TEST(ModelEvaluator, ParameterDerivativeMatchesFiniteDifferences) {
   using MEB = Thyra::ModelEvaluatorBase;
   using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
   auto d = Teuchos::rcp(new Teuchos::ParameterList("cgcm"));
-  io::applyOverrides(*d, *app::validParameters(), {"Geometry/Type=block", "Problem/Formulation=plane strain"});
-  io::validateDeck(*d, *app::validParameters());
+  io::applyOverrides(*d, *test::deckParameters(), {"Geometry/Type=block", "Problem/Formulation=plane strain"});
+  io::validateDeck(*d, *test::deckParameters());
   System sys(*d);
   auto x = Thyra::createMember(sys.model->get_x_space());
   Extract::getTpetraVector(x)->randomize(-0.01, 0.01);
@@ -736,36 +677,6 @@ TEST(LinearSolver, AnUnknownMumpsOrderingIsRejectedByName) {
   expectThrowMatching<std::exception>(
       [&] { settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters()); },
       "\"MUMPS Ordering\" parameter");
-}
-
-TEST(LinearSolver, VerbatimStratimikosListIsUsedAndValidated) {
-  // Type = Stratimikos hands the sublist to Stratimikos as is: a Belos GMRES
-  // with an Ifpack2 ILUT preconditioner must solve the clamped block like the default.
-  auto d = deck({"Geometry/Type=block", "Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
-                 "Loading/Approach Path={0, -0.1}", "Loading/Initial Increment=0.05", "Loading/Max Increment=0.05",
-                 "Output/Print Steps=false",
-                 "Output/Directory=" + std::string(CGCM_TEST_OUTPUT) + "/stratimikos",
-                 "Solver/Linear Solver/Type=Stratimikos"});
-  auto& s = d->sublist("Solver").sublist("Linear Solver").sublist("Stratimikos");
-  s.set("Linear Solver Type", "Belos");
-  auto& gmres = s.sublist("Linear Solver Types").sublist("Belos");
-  gmres.set("Solver Type", "Block GMRES");
-  gmres.sublist("Solver Types").sublist("Block GMRES").set("Convergence Tolerance", 1e-12);
-  s.set("Preconditioner Type", "Ifpack2");
-  s.sublist("Preconditioner Types").sublist("Ifpack2").set("Prec Type", "ILUT");
-  std::ostringstream log;
-  const auto custom = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
-  ASSERT_TRUE(custom.completed) << custom.failure;
-  auto reference = deck({"Geometry/Type=block", "Problem/Formulation=3D", "Geometry/Block/Loaded Face=clamped",
-                         "Loading/Approach Path={0, -0.1}", "Loading/Initial Increment=0.05", "Loading/Max Increment=0.05",
-                         "Output/Print Steps=false",
-                         "Output/Directory=" + std::string(CGCM_TEST_OUTPUT) + "/stratimikos-reference"});
-  const auto ref = app::runSimulation(Tpetra::getDefaultComm(), *reference, log);
-  ASSERT_EQ(custom.curve.size(), ref.curve.size());
-  EXPECT_NEAR(custom.curve.back().P, ref.curve.back().P, 1e-8 * std::abs(ref.curve.back().P));
-
-  s.set("Linear Solver Type", "Magic");  // an unknown solver: a clear error before any work
-  EXPECT_THROW(app::runSimulation(Tpetra::getDefaultComm(), *d, log), InputError);
 }
 
 }  // namespace

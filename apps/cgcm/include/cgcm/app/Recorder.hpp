@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "cgcm/app/Checkpoint.hpp"
 #include "cgcm/app/Results.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/app/Simulation.hpp"
 #include "cgcm/io/CsvWriter.hpp"
+#include "cgcm/solver/Checkpoint.hpp"
 #include "cgcm/solver/PathFollower.hpp"
 
 namespace cgcm::app {
@@ -48,7 +48,8 @@ class Recorder {
   /// last row (later rows, written after it, are dropped) and starts the curve
   /// with the checkpoint's rows.
   Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
-           bool exodus, int parameterIndex, bool print, std::ostream& log, const Checkpoint* resume = nullptr);
+           bool exodus, int parameterIndex, bool print, std::ostream& log,
+           const solver::Checkpoint* resume = nullptr);
 
   /// Steps in results.e so far (rank 0; 0 without Exodus output).
   int exodusSteps() const { return results_ ? results_->numSteps() : 0; }

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "cgcm/app/Checkpoint.hpp"
 #include "cgcm/app/Setup.hpp"
 #include "cgcm/io/ExodusWriter.hpp"
+#include "cgcm/solver/Checkpoint.hpp"
 
 namespace cgcm::app {
 
@@ -55,7 +55,7 @@ class ResultsWriter {
   const Discretization& disc_;
   std::vector<std::string> globals_;
   bool root_;
-  RootGather gather_;
+  solver::RootGather gather_;
   std::unique_ptr<io::ExodusWriter> writer_;
 };
 

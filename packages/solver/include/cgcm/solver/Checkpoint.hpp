@@ -1,25 +1,26 @@
 #pragma once
 // checkpoint.bin: the last accepted state of a displacement-controlled run,
-// enough for `cgcm --restart OUTPUT_DIR` to go on exactly where it stood:
-// the load stepper's state (segment, u, next increment, step count, the
-// secant predictor's previous state), the continuity check's last load, the
-// load-curve rows so far, the Exodus steps written, and the displacement
-// vectors (by global dof). Written by rank 0 after every accepted state,
-// through a temporary file and a rename, so a run killed at any moment
-// leaves either the previous checkpoint or the new one, never a torn file.
-// The file ends with a CRC-32 of all its bytes before it (format 2, magic
-// "cgcmckp2"): a file cut or changed after the write is refused on reading.
+// enough to go on exactly where it stood: the load stepper's state (segment,
+// u, next increment, step count, the secant predictor's previous state), the
+// continuity check's last load, the load-curve rows so far, the Exodus steps
+// written, and the displacement vectors (by global dof). Written by rank 0
+// after every accepted state, through a temporary file and a rename, so a run
+// killed at any moment leaves either the previous checkpoint or the new one,
+// never a torn file. The file ends with a CRC-32 of all its bytes before it
+// (format 2, magic "cgcmckp2"): a file cut or changed after the write is
+// refused on reading.
 #include <string>
 #include <vector>
 
-#include "cgcm/app/Simulation.hpp"
 #include "cgcm/assembly/TpetraTypes.hpp"
+#include "cgcm/core/Error.hpp"
+#include "cgcm/solver/LoadPoint.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
 
-namespace cgcm::app {
+namespace cgcm::solver {
 
 struct Checkpoint {
-  solver::StepperState stepper;
+  StepperState stepper;
   Real lastLoad = 0.0;  ///< the continuity check's reference load
   int exodusSteps = 0;  ///< steps in results.e (0 without Exodus output)
   std::vector<LoadPoint> curve;
@@ -33,10 +34,15 @@ std::string checkpointPath(const std::string& dir);
 /// checkpoint, if any, is left as it was).
 bool writeCheckpoint(const std::string& dir, const Checkpoint& c);
 
+/// There is no checkpoint to read: the file cannot be opened.
+struct MissingCheckpoint : InputError {
+  using InputError::InputError;
+};
+
 /// Reads the checkpoint of `dir` (every rank reads the file). Throws
-/// InputError naming the file if it is missing, damaged (its checksum does
-/// not match: truncated or changed), of another format version, or not a
-/// checkpoint.
+/// MissingCheckpoint if there is none, InputError naming the file if it is
+/// damaged (its checksum does not match: truncated or changed), of another
+/// format version, or not a checkpoint.
 Checkpoint readCheckpoint(const std::string& dir);
 
 /// A distributed vector gathered on rank 0 in global dof order, and back.
@@ -55,4 +61,4 @@ class RootGather {
   Teuchos::RCP<assembly::Vector> all_;
 };
 
-}  // namespace cgcm::app
+}  // namespace cgcm::solver

@@ -4,9 +4,9 @@
 // the jumps, and the energy the hysteresis loop dissipates.
 #include <vector>
 
-#include "cgcm/app/Simulation.hpp"
+#include "cgcm/solver/LoadPoint.hpp"
 
-namespace cgcm::app {
+namespace cgcm::solver {
 
 struct Jump {
   LoadPoint from;  ///< the fold where the stable branch ends
@@ -29,4 +29,4 @@ std::vector<Jump> jumpsOf(const std::vector<LoadPoint>& path);
 /// both cover. 0 for a path without retraction or without hysteresis.
 Real hysteresisEnergy(const std::vector<LoadPoint>& path);
 
-}  // namespace cgcm::app
+}  // namespace cgcm::solver

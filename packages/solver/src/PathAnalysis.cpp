@@ -1,9 +1,9 @@
-#include "cgcm/app/PathAnalysis.hpp"
+#include "cgcm/solver/PathAnalysis.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace cgcm::app {
+namespace cgcm::solver {
 
 std::vector<LoadPoint> displacementControlPath(const std::vector<LoadPoint>& curve) {
   std::vector<LoadPoint> path;
@@ -80,4 +80,4 @@ Real hysteresisEnergy(const std::vector<LoadPoint>& path) {
   return integralAbove(path, 0, turn, uLow) + integralAbove(path, turn, path.size() - 1, uLow);
 }
 
-}  // namespace cgcm::app
+}  // namespace cgcm::solver

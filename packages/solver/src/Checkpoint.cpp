@@ -1,4 +1,4 @@
-#include "cgcm/app/Checkpoint.hpp"
+#include "cgcm/solver/Checkpoint.hpp"
 
 #include <boost/crc.hpp>
 
@@ -9,9 +9,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "cgcm/core/Error.hpp"
-
-namespace cgcm::app {
+namespace cgcm::solver {
 
 namespace {
 
@@ -146,12 +144,10 @@ bool writeCheckpoint(const std::string& dir, const Checkpoint& c) {
 Checkpoint readCheckpoint(const std::string& dir) {
   const std::string path = checkpointPath(dir);
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError("--restart " + dir + ": no checkpoint (" + path +
-                     "): the run recorded no state, or Output/Checkpoint was false");
+  if (!in) throw MissingCheckpoint("no checkpoint (" + path + ")");
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError("--restart " + dir + ": cannot read " + path);
-  const std::string refused = "--restart " + dir + ": " + path;
+  if (in.bad()) throw InputError("cannot read " + path);
+  const std::string& refused = path;
   constexpr std::size_t header = sizeof kMagicStem + 1;
   const bool cgcm = bytes.size() >= header && std::memcmp(bytes.data(), kMagicStem, sizeof kMagicStem) == 0;
   const char version = cgcm ? bytes[sizeof kMagicStem] : 0;
@@ -211,4 +207,4 @@ void RootGather::scatter(const std::vector<Real>& values, assembly::Vector& x) {
   x.doExport(*all_, *import_, Tpetra::INSERT);
 }
 
-}  // namespace cgcm::app
+}  // namespace cgcm::solver

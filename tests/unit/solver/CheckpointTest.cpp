@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cgcm/app/Checkpoint.hpp"
+#include "cgcm/solver/Checkpoint.hpp"
 #include "cgcm/core/Error.hpp"
 
-namespace cgcm::app {
+namespace cgcm::solver {
 namespace {
 
 std::string freshDir(const std::string& name) {
@@ -178,4 +178,4 @@ TEST(Checkpoint, RefusesTheOlderFormat) {
 }
 
 }  // namespace
-}  // namespace cgcm::app
+}  // namespace cgcm::solver

@@ -1,6 +1,6 @@
-// From rank 0 to the others: the problem's set-up without the mesh, and each
-// rank's part of the mesh. Rank 0 alone builds (meshes, reads) the whole mesh.
-#include "Distribution.hpp"
+// From rank 0 to the others: each rank's part of the mesh. Rank 0 alone
+// builds (meshes, reads) the whole mesh. Then each rank's discrete problem.
+#include "cgcm/solver/Discretization.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "cgcm/core/Bytes.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/LocalPart.hpp"
+#include "cgcm/solver/LinearSolver.hpp"
 
-namespace cgcm::app {
+namespace cgcm::solver {
 
 void runOnRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& work) {
   enum Outcome : int { Done, BadInput, FailedEvaluation, OtherError };
@@ -64,9 +64,9 @@ std::vector<char> receiveBytes(const Teuchos::Comm<int>& comm, int from) {
   return bytes;
 }
 
-// Runs `decode` on every rank; if it fails on any, every rank throws (the ranks stay in step).
-template <class Decode>
-void decodeOnEveryRank(const Teuchos::Comm<int>& comm, Decode decode) {
+}  // namespace
+
+void decodeOnEveryRank(const Teuchos::Comm<int>& comm, const std::function<void()>& decode) {
   std::string error;
   try {
     decode();
@@ -86,49 +86,6 @@ void broadcastBytes(const Teuchos::Comm<int>& comm, std::vector<char>& bytes) {
   bytes.resize(std::size_t(size));
   for (long long at = 0; at < size; at += kPiece)
     Teuchos::broadcast(comm, 0, int(std::min(kPiece, size - at)), bytes.data() + at);
-}
-
-// What rank 0's model and mesh add to the deck's set-up, without the mesh: the
-// other ranks make the rest from the deck themselves (setupFromDeck).
-std::vector<char> toBytes(const ProblemSetup& s) {
-  core::ByteWriter out;
-  mesh::put(out, s.model);
-  out.put(s.bodyMaterials);
-  out.put(std::uint64_t(s.report.size()));
-  for (const auto& line : s.report) out.put(line);
-  out.put(s.numNodes);
-  out.put(s.numCells);
-  return out.take();
-}
-
-ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vector<char>& bytes) {
-  core::ByteReader in(bytes);
-  ProblemSetup s = setupFromDeck(deck);
-  attachModel(s, mesh::getModel(in), deck);
-  s.bodyMaterials = in.getVector<material::NeoHookean>();
-  s.report.resize(in.getCount(sizeof(std::uint64_t)));  // rank 0's, the body materials' lines included
-  for (auto& line : s.report) line = in.getString();
-  s.numNodes = in.get<std::size_t>();
-  s.numCells = in.get<std::size_t>();
-  if (!in.atEnd()) throw std::logic_error("setupFromBytes: bytes left over");
-  return s;
-}
-
-}  // namespace
-
-ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck) {
-  if (comm.getSize() == 1) return buildProblem(deck);
-  ProblemSetup setup;
-  std::vector<char> bytes;
-  runOnRoot(comm, [&] {
-    setup = buildProblem(deck);
-    bytes = toBytes(setup);
-  });
-  broadcastBytes(comm, bytes);
-  decodeOnEveryRank(comm, [&] {
-    if (comm.getRank() != 0) setup = setupFromBytes(deck, bytes);
-  });
-  return setup;
 }
 
 Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup) {
@@ -176,4 +133,44 @@ Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, assembly::CellPartition::LocalPart))};
 }
 
-}  // namespace cgcm::app
+namespace {
+
+Discretization discretize(const Distribution& dist, const ProblemSetup& setup,
+                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
+  Discretization d;
+  d.mesh = dist.mesh;
+  d.dofs = dist.dofs;
+  d.problem = setup.bodyMaterials.empty()
+                  ? std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.material)
+                  : std::make_shared<assembly::Problem>(d.dofs, d.mesh, setup.formulation, setup.bodyMaterials);
+  std::vector<ScalarParameter> parameters;
+  if (setup.interaction) {
+    const auto interaction = setup.interaction->create(*d.mesh);
+    d.problem->setInteraction(interaction, setup.interaction->searchRadiusFactor);
+    parameters = setup.interaction->scalarParameters(interaction);
+  }
+  d.dirichlet = std::make_shared<assembly::DirichletConditions>(d.dofs);
+  for (const auto& c : setup.model.conditions)
+    d.dirichlet->add(d.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
+  d.model = Teuchos::rcp(new ModelEvaluator(d.problem, d.dirichlet, std::move(linearSolver), std::move(parameters)));
+  return d;
+}
+
+}  // namespace
+
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> linearSolver) {
+  return discretize(distribute(comm, setup), setup, std::move(linearSolver));
+}
+
+Discretization discretize(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup,
+                          const Teuchos::ParameterList& linearSolver) {
+  const auto dist = distribute(comm, setup);
+  const bool rigid = linearSolver.get<std::string>("MueLu Near Null Space") == "rigid body modes";
+  const auto modes = rigid ? assembly::rigidBodyModes(*dist.dofs, *dist.mesh, setup.formulation) : Teuchos::null;
+  return discretize(dist, setup,
+                    buildLinearSolver(linearSolver, comm->getSize(), dist.dofs->dofsPerNode(), modes,
+                                      !setup.interaction.has_value()));
+}
+
+}  // namespace cgcm::solver
