@@ -54,7 +54,7 @@ RCP<const ParameterList> validParameters() {
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");
   solverList.set("Partition", "geometric",
                  "how cells are split over MPI ranks: \"geometric\" (Zoltan2 multi-jagged cuts of the cell "
-                 "centroids: compact parts, short interfaces) or \"contiguous\" (ranges of the mesh's cell "
+                 "centroids: compact subdomains, short interfaces) or \"contiguous\" (ranges of the mesh's cell "
                  "numbering); no effect on one rank",
                  choices({"geometric", "contiguous"}));
   solverList.sublist("Newton", false, "Newton's method (NOX) at each load step and in every continuation corrector")

@@ -59,13 +59,13 @@ void prepareOutput(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList&
 // checkpoint.bin after every accepted state of a displacement-controlled path
 // (collective: the vectors are gathered on rank 0).
 solver::LoadStepper::CheckpointSink checkpointSink(const std::string& dir, const Recorder& recorder,
-                                                  RootGather& gather, const Real& lastLoad, bool root) {
+                                                  RootGather& gather, const Real& lastDisplacement, bool root) {
   auto failed = std::make_shared<bool>(false);
-  return [&recorder, &gather, &lastLoad, dir, root, failed](const solver::StepperState& s, const Vector& state,
+  return [&recorder, &gather, &lastDisplacement, dir, root, failed](const solver::StepperState& s, const Vector& state,
                                                            const Vector& before) {
     Checkpoint c;
     c.stepper = s;
-    c.lastLoad = lastLoad;
+    c.lastDisplacement = lastDisplacement;
     c.exodusSteps = recorder.exodusSteps();
     c.u = gather.gather(state);
     if (s.havePrevious) c.previous = gather.gather(before);
@@ -175,11 +175,11 @@ solver::PathContext pathContext(const Discretization& disc, solver::NewtonSolver
 }
 
 // A converged step whose gap moved much more than the prescribed displacement
-// (since `lastLoad`, the last state that was no fold) left its branch.
+// (since `lastDisplacement`, the last state that was no fold) left its branch.
 solver::LoadStepper::ContinuityCheck continuityCheck(const ContactProbe& probe, const solver::ModelEvaluator& model,
-                                                     const Real& lastLoad, Real floor) {
-  return [&probe, &model, &lastLoad, floor](const Vector& before, const Vector& after) {
-    const Real du = std::abs(model.load() - lastLoad);
+                                                     const Real& lastDisplacement, Real floor) {
+  return [&probe, &model, &lastDisplacement, floor](const Vector& before, const Vector& after) {
+    const Real du = std::abs(model.displacement() - lastDisplacement);
     return std::abs(probe.gap(after) - probe.gap(before)) <= std::max(5.0 * du, floor);
   };
 }
@@ -211,7 +211,7 @@ void initialGuess(const ProblemSetup& setup, const Discretization& disc, const s
       motion.add(disc.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
     motion.impose(plan.path().path.front(), u);
   }
-  disc.model->setLoad(resume ? resume->stepper.load : plan.path().path.front());
+  disc.model->setDisplacement(resume ? resume->stepper.displacement : plan.path().path.front());
 }
 
 }  // namespace
@@ -262,16 +262,16 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Follow the path, recording every accepted state (a checkpoint after each, under displacement control).
   Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), model->parameterIndex(plan.parameter()),
                     printSteps, log, resume ? &*resume : nullptr);
-  Real lastLoad = resume ? resume->lastLoad : plan.path().path.front();  // of the last state that was no fold
+  Real lastDisplacement = resume ? resume->lastDisplacement : plan.path().path.front();  // of the last state that was no fold
   solver::PathContext context = pathContext(disc, newton, continuation, resume, previous);
-  if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(dir, recorder, gather, lastLoad, root);
-  if (probe) context.continuity = continuityCheck(*probe, *model, lastLoad, 0.05 * setup.interaction->potential->r0());
+  if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(dir, recorder, gather, lastDisplacement, root);
+  if (probe) context.continuity = continuityCheck(*probe, *model, lastDisplacement, 0.05 * setup.interaction->potential->r0());
   const auto runStart = std::chrono::steady_clock::now();
   const assembly::AssemblyTimings timingsBefore = disc.problem->timings();
   try {
     const auto cost = plan.follow(u, context, [&](const solver::PathState& state) {
       recorder.record(state);
-      if (!state.fold) lastLoad = state.p[0];
+      if (!state.fold) lastDisplacement = state.p[0];
     });
     result.continuationSteps = cost.continuationSteps, result.graphRestarts = cost.graphRestarts;
     result.completed = true;

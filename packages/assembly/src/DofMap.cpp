@@ -23,18 +23,18 @@ CellPartition parseCellPartition(const std::string& name) {
 
 namespace {
 
-// `numParts` parts of the mesh-wide cells, computed by the ranks of `comm`, each of which holds the whole mesh.
-std::vector<int> cellParts(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition, int numParts) {
-  if (partition == CellPartition::LocalPart) throw std::logic_error("partitionCells: a local part is partitioned");
-  if (numParts < 1) throw std::logic_error("partitionCells: " + std::to_string(numParts) + " parts");
+// `numSubdomains` subdomains of the mesh-wide cells, computed by the ranks of `comm`, each of which holds the whole mesh.
+std::vector<int> cellSubdomains(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition, int numSubdomains) {
+  if (partition == CellPartition::Subdomain) throw std::logic_error("partitionCells: a subdomain is partitioned");
+  if (numSubdomains < 1) throw std::logic_error("partitionCells: " + std::to_string(numSubdomains) + " subdomains");
   const int rank = comm.getRank(), p = comm.getSize();
   const LocalIndex numCells = mesh.numCells();
   auto first = [&](int r, int of) { return LocalIndex((long long)numCells * r / of); };
   std::vector<int> owner(numCells, 0);
-  if (numParts == 1) return owner;
+  if (numSubdomains == 1) return owner;
   if (partition == CellPartition::Contiguous) {
-    for (int r = 0; r < numParts; ++r)
-      for (LocalIndex c = first(r, numParts); c < first(r + 1, numParts); ++c) owner[c] = r;
+    for (int r = 0; r < numSubdomains; ++r)
+      for (LocalIndex c = first(r, numSubdomains); c < first(r + 1, numSubdomains); ++c) owner[c] = r;
     return owner;
   }
   // Each rank hands Zoltan2 the centroids of a contiguous share; the parts come back per share and are
@@ -61,7 +61,7 @@ std::vector<int> cellParts(const Comm& comm, const mesh::Mesh& mesh, CellPartiti
                   dim == 3 ? centroids[2].data() : nullptr, 1, 1, 1, true, weights.data(), 1);
   Teuchos::ParameterList params;
   params.set("algorithm", "multijagged");
-  params.set("num_global_parts", numParts);
+  params.set("num_global_parts", numSubdomains);
   params.set("imbalance_tolerance", 1.02);
   Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &params, Teuchos::rcpFromRef(comm));
   problem.solve();
@@ -76,11 +76,11 @@ std::vector<int> cellParts(const Comm& comm, const mesh::Mesh& mesh, CellPartiti
 }  // namespace
 
 std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition) {
-  return cellParts(comm, mesh, partition, comm.getSize());
+  return cellSubdomains(comm, mesh, partition, comm.getSize());
 }
 
-std::vector<int> partitionCells(const mesh::Mesh& mesh, CellPartition partition, int numParts) {
-  return cellParts(Teuchos::SerialComm<int>(), mesh, partition, numParts);
+std::vector<int> partitionCells(const mesh::Mesh& mesh, CellPartition partition, int numSubdomains) {
+  return cellSubdomains(Teuchos::SerialComm<int>(), mesh, partition, numSubdomains);
 }
 
 namespace {
@@ -99,12 +99,12 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
                CellPartition partition)
     : comm_(comm),
       dofsPerNode_(dofsPerNode),
-      cellOwner_(partition == CellPartition::LocalPart ? std::vector<int>(std::size_t(mesh.numCells()), comm->getRank())
+      cellOwner_(partition == CellPartition::Subdomain ? std::vector<int>(std::size_t(mesh.numCells()), comm->getRank())
                                                        : partitionCells(*comm, mesh, partition)),
       nodeIds_(mesh.nodeIds),
       numMeshNodes_(mesh.numNodes()) {
   const int rank = comm->getRank(), p = comm->getSize();
-  std::string badIds;  // thrown on every rank at once: the ranks' parts have ids of their own
+  std::string badIds;  // thrown on every rank at once: the ranks' subdomains have ids of their own
   if (!nodeIds_.empty()) {
     if (nodeIds_.size() != std::size_t(mesh.numNodes()))
       badIds = "the mesh has " + std::to_string(nodeIds_.size()) + " node ids for " + std::to_string(mesh.numNodes()) +
@@ -136,7 +136,7 @@ DofMap::DofMap(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, int
   }
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   ownsNode_.assign(std::size_t(mesh.numNodes()), 0);
-  if (partition != CellPartition::LocalPart) {
+  if (partition != CellPartition::Subdomain) {
     // Nodes that belong to no cell would make the system singular.
     for (LocalIndex n = 0; n < mesh.numNodes(); ++n) ownsNode_[n] = nodeOwner[n] == rank || (nodeOwner[n] == p && rank == 0);
   } else {  // the ranks that share a node see only their own cells: Tpetra's directory settles it

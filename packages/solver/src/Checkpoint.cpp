@@ -55,12 +55,12 @@ std::string fields(const Checkpoint& c) {
   std::ostringstream out(std::ios::binary);
   const auto& s = c.stepper;
   put(out, std::uint64_t(s.segment));
-  put(out, s.load);
+  put(out, s.displacement);
   put(out, s.increment);
   put(out, std::int32_t(s.step));
   put(out, std::uint8_t(s.havePrevious));
-  put(out, s.previousLoad);
-  put(out, c.lastLoad);
+  put(out, s.previousDisplacement);
+  put(out, c.lastDisplacement);
   put(out, std::int32_t(c.exodusSteps));
   put(out, std::uint64_t(c.curve.size()));
   for (const LoadPoint& p : c.curve) {
@@ -83,12 +83,12 @@ bool parseFields(std::istream& in, std::uint64_t size, Checkpoint& c) {
   std::int32_t step = 0, exodusSteps = 0;
   std::uint8_t havePrevious = 0;
   get(in, segment);
-  get(in, c.stepper.load);
+  get(in, c.stepper.displacement);
   get(in, c.stepper.increment);
   get(in, step);
   get(in, havePrevious);
-  get(in, c.stepper.previousLoad);
-  get(in, c.lastLoad);
+  get(in, c.stepper.previousDisplacement);
+  get(in, c.lastDisplacement);
   get(in, exodusSteps);
   get(in, rows);
   if (!in || rows > size) return false;

@@ -1,4 +1,4 @@
-// From rank 0 to the others: each rank's part of the mesh. Rank 0 alone
+// From rank 0 to the others: each rank's subdomain of the mesh. Rank 0 alone
 // builds (meshes, reads) the whole mesh. Then each rank's discrete problem.
 #include "cgcm/solver/Discretization.hpp"
 
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cgcm/core/Error.hpp"
-#include "cgcm/mesh/LocalPart.hpp"
+#include "cgcm/mesh/Subdomain.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 
 namespace cgcm::solver {
@@ -105,8 +105,8 @@ Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
     });
     return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, setup.partition))};
   }
-  // Rank 0 cuts the parts one at a time and sends each before the next (its memory: the whole mesh and
-  // two parts); a failure to cut one stops every rank at once.
+  // Rank 0 cuts the subdomains one at a time and sends each before the next (its memory: the whole mesh and
+  // two subdomains); a failure to cut one stops every rank at once.
   std::vector<int> owners;
   std::vector<LocalIndex> probed;  // the contact probe reads its apexes on every rank
   runOnRoot(*comm, [&] {
@@ -119,18 +119,18 @@ Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   });
   std::vector<char> bytes;
   for (int r = 1; r < p; ++r) {
-    runOnRoot(*comm, [&] { bytes = mesh::toBytes(mesh::localPart(*setup.model.mesh, owners, r, probed)); });
+    runOnRoot(*comm, [&] { bytes = mesh::toBytes(mesh::subdomain(*setup.model.mesh, owners, r, probed)); });
     if (rank == 0) sendBytes(*comm, r, bytes);
     if (rank == r) bytes = receiveBytes(*comm, 0);
   }
   if (rank == 0) std::vector<char>().swap(bytes);
   runOnRoot(*comm, [&] {
-    mine = std::make_shared<const mesh::Mesh>(mesh::localPart(*setup.model.mesh, owners, 0, probed));
+    mine = std::make_shared<const mesh::Mesh>(mesh::subdomain(*setup.model.mesh, owners, 0, probed));
   });
   decodeOnEveryRank(*comm, [&] {
     if (rank != 0) mine = std::make_shared<const mesh::Mesh>(mesh::meshFromBytes(bytes));
   });
-  return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, assembly::CellPartition::LocalPart))};
+  return {mine, Teuchos::rcp(new assembly::DofMap(comm, *mine, dim, assembly::CellPartition::Subdomain))};
 }
 
 namespace {

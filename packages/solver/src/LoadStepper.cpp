@@ -97,7 +97,7 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
   segment.stableStart = true;
   segment.landOnly = true;
   segment.stopAtFold = settings_.jumpMethod == LoadPathSettings::JumpMethod::Relaxation;
-  model_->setLoad(p);
+  model_->setDisplacement(p);
   bool first = true;
   const auto result = continuation_->run(u, segment, [&](const PathPoint& pt) {
     // Under displacement control only the fold where the branch ends is a
@@ -107,7 +107,7 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
     first = false;
     StepInfo fold;
     fold.step = ++step;
-    fold.load = pt.p[0];
+    fold.displacement = pt.p[0];
     fold.fold = true;
     fold.newton.converged = true;
     fold.newton.iterations = pt.iterations;
@@ -115,7 +115,7 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
     observer(fold, *pt.x);
   });
   jumps_.push_back(result);
-  model_->setLoad(pNew);
+  model_->setDisplacement(pNew);
   if (landing != nullptr && !result.reached) {
     // The jump's end is known; the continuation only located its fold (or
     // could not). The landing moves back along its branch (which exists
@@ -130,16 +130,16 @@ bool LoadStepper::continueThrough(Real p, Real pNew, Vector& u, Vector& trial, S
     if (result.stoppedAtFold) {
       const Real uJump = result.folds.front().p[0];
       Vector near(*landing, Teuchos::Copy);
-      model_->setLoad(uJump);
+      model_->setDisplacement(uJump);
       model_->dirichlet().impose(uJump, near);
       const NewtonResult back = newton_.solve(near);
       info.newton.iterations += back.iterations;
       if (back.converged && (!continuous_ || continuous_(*landing, near))) {
         trial.assign(near);
-        info.load = uJump;
+        info.displacement = uJump;
         info.newton.residualNorms = back.residualNorms;
       }
-      model_->setLoad(info.load);
+      model_->setDisplacement(info.displacement);
     }
     return true;
   }
@@ -171,7 +171,7 @@ bool LoadStepper::relaxThrough(Real p, Real pNew, Vector& u, Vector& trial, Step
   // snapping on or off, which the check lets pass) if it fell. For a jump
   // that leaves the branch (jump-in, pull-off) continuation from the last
   // state locates the fold, so that the curve shows where the branch ends.
-  model_->setLoad(pNew);
+  model_->setDisplacement(pNew);
   trial.assign(u);
   model_->dirichlet().impose(pNew, trial);
   info.newton = newton_.relax(trial, settings_.relaxation);
@@ -181,7 +181,7 @@ bool LoadStepper::relaxThrough(Real p, Real pNew, Vector& u, Vector& trial, Step
     info.newton.iterations += spent;
     return passed;
   }
-  info.load = pNew;
+  info.displacement = pNew;
   info.jump = info.newton.fell;
   if (!continuous_ || continuous_(u, trial)) return true;
   info.jump = true;
@@ -198,14 +198,14 @@ bool LoadStepper::relaxFromFold(const PathPoint& fold, Real direction, Real pNew
   int iterations = 0;
   for (;;) {
     const Real uJump = offset >= room ? pNew : uFold + direction * offset;
-    model_->setLoad(uJump);
+    model_->setDisplacement(uJump);
     trial.assign(*fold.x);
     model_->dirichlet().impose(uJump, trial);
     info.newton = newton_.relax(trial, settings_.relaxation);
     iterations += info.newton.iterations;
     info.newton.iterations = iterations;
     if (info.newton.converged) {
-      info.load = uJump;
+      info.displacement = uJump;
       info.jump = true;
       return true;
     }
@@ -230,7 +230,7 @@ void LoadStepper::run(Vector& u, const Observer& observer, const CheckpointSink&
   // Predictor: extrapolate along the secant of the last two states (exact in
   // the rigid phase, close elsewhere), then impose the new boundary values.
   auto attempt = [&](Real p, StepInfo& info) {
-    model_->setLoad(p);
+    model_->setDisplacement(p);
     trial.assign(u);
     if (havePrevious && pCurrent != pPrevious)
       trial.update((p - pCurrent) / (pCurrent - pPrevious), u, -(p - pCurrent) / (pCurrent - pPrevious), uPrevious,
@@ -254,25 +254,25 @@ void LoadStepper::run(Vector& u, const Observer& observer, const CheckpointSink&
   auto state = [&](std::size_t seg) {
     StepperState s;
     s.segment = seg;
-    s.load = p;
+    s.displacement = p;
     s.increment = increment;
     s.step = step;
     s.havePrevious = havePrevious;
-    s.previousLoad = pPrevious;
+    s.previousDisplacement = pPrevious;
     return s;
   };
   if (resume != nullptr) {
-    p = pCurrent = resume->load;
+    p = pCurrent = resume->displacement;
     increment = resume->increment;
     step = resume->step;
     havePrevious = resume->havePrevious && previous != nullptr;
-    pPrevious = resume->previousLoad;
+    pPrevious = resume->previousDisplacement;
     if (havePrevious) uPrevious.assign(*previous);
     firstSegment = resume->segment;
-    model_->setLoad(p);
+    model_->setDisplacement(p);
   } else {
     StepInfo info;
-    info.load = path[0];
+    info.displacement = path[0];
     if (!attempt(path[0], info))
       throw NumericalError("no equilibrium at the start of the load path, u = " + std::to_string(path[0]) + ": " +
                            info.newton.failure);
@@ -290,7 +290,7 @@ void LoadStepper::run(Vector& u, const Observer& observer, const CheckpointSink&
         const Real dp = std::min(increment, dir * (target - p));
         // Land exactly on the waypoint when the remainder is a small fraction of a step.
         const Real pNew = (dir * (target - p) - dp < 0.05 * dp) ? target : p + dir * dp;
-        info.load = pNew;
+        info.displacement = pNew;
         const bool converged = attempt(pNew, info);
         if (converged && (!continuous_ || continuous_(u, trial))) break;
         if (converged) info.newton.failure = "the state left its branch";
@@ -306,14 +306,14 @@ void LoadStepper::run(Vector& u, const Observer& observer, const CheckpointSink&
           }
           std::ostringstream msg;
           msg << "step " << step + 1 << " from u = " << p << " to " << pNew << " failed: " << info.newton.failure;
-          model_->setLoad(p);
+          model_->setDisplacement(p);
           throw NumericalError(msg.str());
         }
         if (exhausted) {
           std::ostringstream msg;
           msg << "step " << step + 1 << " from u = " << p << " failed below Loading/Min Increment = "
               << settings_.minIncrement << " (" << info.newton.failure << ")";
-          model_->setLoad(p);
+          model_->setDisplacement(p);
           throw NumericalError(msg.str());
         }
         increment *= settings_.cutback;
@@ -321,7 +321,7 @@ void LoadStepper::run(Vector& u, const Observer& observer, const CheckpointSink&
       uPrevious.assign(u);
       pPrevious = p;
       havePrevious = !info.jump;  // no secant across a jump
-      p = info.load;
+      p = info.displacement;
       pCurrent = p;
       u.assign(trial);
       info.step = ++step;

@@ -26,7 +26,7 @@ ModelEvaluator::ModelEvaluator(std::shared_ptr<assembly::Problem> problem,
   xSpace_ = Thyra::createVectorSpace<Real>(map());
   pMap_ = Teuchos::rcp(new assembly::Map(np, 0, comm, Tpetra::LocallyReplicated));
   pSpace_ = Thyra::createVectorSpace<Real>(pMap_);
-  auto names = Teuchos::rcp(new Teuchos::Array<std::string>(1, kLoadParameterName));
+  auto names = Teuchos::rcp(new Teuchos::Array<std::string>(1, kDisplacementParameterName));
   for (const auto& e : extra_) names->push_back(e.name);
   pNames_ = names;
 

@@ -23,7 +23,7 @@ class DisplacementControl final : public PathFollower {
       PathState s;
       s.x = &state;
       s.p = c.model->parameters();
-      s.p[0] = info.load;
+      s.p[0] = info.displacement;
       s.step = info.step;
       s.iterations = info.newton.iterations;
       s.residual = info.newton.residualNorms.empty() ? 0.0 : info.newton.residualNorms.back();

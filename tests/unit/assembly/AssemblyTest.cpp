@@ -20,7 +20,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/mesh/Generators.hpp"
-#include "cgcm/mesh/LocalPart.hpp"
+#include "cgcm/mesh/Subdomain.hpp"
 
 namespace cgcm::assembly {
 namespace {
@@ -459,8 +459,8 @@ TEST(DofMap, RanksHoldingTheirPartsAssembleWhatTheWholeMeshGives) {
   auto whole = twoBoxes(0.3, 4);  // interior nodes: a rank's part leaves out those of the other's cells
   auto wholeDofs = Teuchos::rcp(new DofMap(comm, *whole, 3));
   const auto owners = partitionCells(*comm, *whole, CellPartition::Geometric);
-  auto part = std::make_shared<mesh::Mesh>(mesh::localPart(*whole, owners, comm->getRank()));
-  auto partDofs = Teuchos::rcp(new DofMap(comm, *part, 3, CellPartition::LocalPart));
+  auto part = std::make_shared<mesh::Mesh>(mesh::subdomain(*whole, owners, comm->getRank()));
+  auto partDofs = Teuchos::rcp(new DofMap(comm, *part, 3, CellPartition::Subdomain));
   EXPECT_TRUE(partDofs->ownedMap()->isSameAs(*wholeDofs->ownedMap()));
   EXPECT_TRUE(partDofs->overlapMap()->isSameAs(*wholeDofs->overlapMap()));
   LocalIndex partCells = 0;

@@ -8,7 +8,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
-#include "cgcm/mesh/LocalPart.hpp"
+#include "cgcm/mesh/Subdomain.hpp"
 #include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
 
@@ -320,7 +320,7 @@ TEST(Mirror, RejectsNodesOnTheNegativeSide) {
 // Three ranks' parts of a 4^3 box split in slabs along x: each has its cells with their nodes in
 // ascending global id and the whole surface; the parts' cells add up to the mesh, node sets are
 // restricted, and a facet's cell is the part's own or -1.
-TEST(LocalPart, HoldsItsCellsTheirNodesAndTheWholeSurface) {
+TEST(Subdomain, HoldsItsCellsTheirNodesAndTheWholeSurface) {
   BoxSpec spec;
   spec.nx = spec.ny = spec.nz = 4;
   const Mesh whole = box(spec);
@@ -333,7 +333,7 @@ TEST(LocalPart, HoldsItsCellsTheirNodesAndTheWholeSurface) {
   LocalIndex cells = 0;
   for (int rank = 0; rank < 3; ++rank) {
     SCOPED_TRACE(rank);
-    const Mesh part = localPart(whole, owner, rank);
+    const Mesh part = subdomain(whole, owner, rank);
     cells += part.numCells();
     ASSERT_EQ(part.nodeIds.size(), std::size_t(part.numNodes()));
     EXPECT_TRUE(std::is_sorted(part.nodeIds.begin(), part.nodeIds.end()));
@@ -365,14 +365,14 @@ TEST(LocalPart, HoldsItsCellsTheirNodesAndTheWholeSurface) {
 // A mesh sent to another rank (toBytes, meshFromBytes) arrives whole: a two-body mesh with node sets,
 // and a part with its node ids, cell ids and facets of other ranks' cells. A cut or padded buffer is
 // refused.
-TEST(LocalPart, MeshesTravelAsBytesUnchanged) {
+TEST(Subdomain, MeshesTravelAsBytesUnchanged) {
   BoxSpec spec;
   spec.x0 = 0.5, spec.nx = 3, spec.ny = 2, spec.nz = 2;
   Mesh whole = box(spec);
   mirror(whole, 0);
   std::vector<int> owner(std::size_t(whole.numCells()));
   for (std::size_t c = 0; c < owner.size(); ++c) owner[c] = int(c % 2);
-  for (const Mesh& m : {whole, localPart(whole, owner, 1)}) {
+  for (const Mesh& m : {whole, subdomain(whole, owner, 1)}) {
     const Mesh back = meshFromBytes(toBytes(m));
     EXPECT_EQ(back.dim, m.dim);
     EXPECT_EQ(back.numBodies, m.numBodies);

@@ -22,12 +22,12 @@ std::string freshDir(const std::string& name) {
 Checkpoint sample() {
   Checkpoint c;
   c.stepper.segment = 2;
-  c.stepper.load = 0.0315;
+  c.stepper.displacement = 0.0315;
   c.stepper.increment = 0.0015;
   c.stepper.step = 41;
   c.stepper.havePrevious = true;
-  c.stepper.previousLoad = 0.0302;
-  c.lastLoad = 0.0315;
+  c.stepper.previousDisplacement = 0.0302;
+  c.lastDisplacement = 0.0315;
   c.exodusSteps = 42;
   for (int k = 0; k < 3; ++k) {
     LoadPoint p;
@@ -55,12 +55,12 @@ TEST(Checkpoint, ReadsBackWhatWasWritten) {
   EXPECT_FALSE(std::filesystem::exists(checkpointPath(dir) + ".tmp"));
   const Checkpoint r = readCheckpoint(dir);
   EXPECT_EQ(r.stepper.segment, c.stepper.segment);
-  EXPECT_EQ(r.stepper.load, c.stepper.load);
+  EXPECT_EQ(r.stepper.displacement, c.stepper.displacement);
   EXPECT_EQ(r.stepper.increment, c.stepper.increment);
   EXPECT_EQ(r.stepper.step, c.stepper.step);
   EXPECT_EQ(r.stepper.havePrevious, c.stepper.havePrevious);
-  EXPECT_EQ(r.stepper.previousLoad, c.stepper.previousLoad);
-  EXPECT_EQ(r.lastLoad, c.lastLoad);
+  EXPECT_EQ(r.stepper.previousDisplacement, c.stepper.previousDisplacement);
+  EXPECT_EQ(r.lastDisplacement, c.lastDisplacement);
   EXPECT_EQ(r.exodusSteps, c.exodusSteps);
   EXPECT_EQ(r.u, c.u);
   EXPECT_EQ(r.previous, c.previous);

@@ -163,7 +163,7 @@ class FaultyModel : public solver::ModelEvaluator {
  protected:
   void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<Real>& in,
                      const Thyra::ModelEvaluatorBase::OutArgs<Real>& out) const override {
-    const double u = in.get_p(0).is_null() ? load() : Thyra::get_ele(*in.get_p(0), 0);
+    const double u = in.get_p(0).is_null() ? displacement() : Thyra::get_ele(*in.get_p(0), 0);
     if (u < -0.09 && u > -0.2 && thrown == 0) {
       ++thrown;
       throw NumericalError("injected evaluation failure");
@@ -194,7 +194,7 @@ TEST(LoadStepping, AnEvaluationErrorCutsTheStepBack) {
   int cutbacks = 0;
   for (const auto& s : steps) cutbacks += s.cutbacks;
   EXPECT_GE(cutbacks, 1);
-  EXPECT_DOUBLE_EQ(steps.back().load, -0.2);
+  EXPECT_DOUBLE_EQ(steps.back().displacement, -0.2);
   for (const auto& s : steps) EXPECT_LE(s.newton.residualNorms.back(), settings.tolerance());
 }
 

@@ -70,7 +70,7 @@ struct System {
 solver::NewtonResult solveFromRest(System& sys, const solver::NewtonSettings& settings, Real load) {
   solver::NewtonSolver newton(sys.model, settings);
   assembly::Vector u(sys.model->map());
-  sys.model->setLoad(load);
+  sys.model->setDisplacement(load);
   sys.dirichlet->impose(load, u);
   return newton.solve(u);
 }
@@ -129,7 +129,7 @@ TEST(Newton, ConvergesQuadraticallyOnLargeInhomogeneousDeformation) {
     settings.residualTolerance = 1e-14;
     solver::NewtonSolver newton(sys.model, settings);
     assembly::Vector u(sys.model->map());
-    sys.model->setLoad(-0.2);
+    sys.model->setDisplacement(-0.2);
     sys.dirichlet->impose(-0.2, u);
     const auto r = newton.solve(u);
     ASSERT_TRUE(r.converged) << r.failure;
@@ -156,7 +156,7 @@ TEST(ModelEvaluator, JacobianMatchesFiniteDifferencesOfResidual) {
     assembly::Vector u(map), v(map), Jv(map), fp(map), fm(map), up(map), um(map);
     u.randomize(-0.05, 0.05);
     v.randomize(-1.0, 1.0);
-    sys.model->setLoad(-0.03);
+    sys.model->setDisplacement(-0.03);
     auto W = sys.problem->createMatrix();
     sys.problem->evaluate(u, fp, W.get());
     sys.dirichlet->applyToJacobian(*W);
@@ -183,7 +183,7 @@ TEST(PseudoTransientModel, ResidualAndShiftedJacobianAreMxdotPlusFAndAlphaMPlusJ
   u.randomize(-0.05, 0.05);
   xDot.randomize(-1.0, 1.0);
   v.randomize(-1.0, 1.0);
-  sys.model->setLoad(-0.03);
+  sys.model->setDisplacement(-0.03);
   sys.dirichlet->impose(-0.03, u);
   solver::PseudoTransientModel transient(sys.model);
   transient.setMassFromJacobian(u);
@@ -247,7 +247,7 @@ TEST(Newton, RelaxationEndsOnTheNewtonSolution) {
     settings.forceScale = sys.setup.forceScale;
     solver::NewtonSolver newton(sys.model, settings);
     assembly::Vector byNewton(sys.model->map()), byRelaxation(sys.model->map());
-    sys.model->setLoad(-0.2);
+    sys.model->setDisplacement(-0.2);
     sys.dirichlet->impose(-0.2, byNewton);
     sys.dirichlet->impose(-0.2, byRelaxation);
     const auto rn = newton.solve(byNewton);
@@ -343,7 +343,7 @@ TEST(Newton, BacktrackingLineSearchConverges) {
   settings.residualTolerance = 1e-12;
   solver::NewtonSolver newton(model, settings);
   assembly::Vector u(model->map());
-  model->setLoad(-0.2);  // 20 % in one step from rest: the top cells start at J = 0.2
+  model->setDisplacement(-0.2);  // 20 % in one step from rest: the top cells start at J = 0.2
   bc->impose(-0.2, u);
   const auto r = newton.solve(u);
   ASSERT_TRUE(r.converged) << r.failure;

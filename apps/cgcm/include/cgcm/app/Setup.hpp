@@ -27,7 +27,7 @@ void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath);
 ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 /// The same on several ranks: rank 0 builds the problem (it alone meshes and reads mesh files) and
 /// sends the others its model without the mesh, the body materials and the report; they read the
-/// rest of the deck themselves (their `model.mesh` is null; discretize() gives each its part as
+/// rest of the deck themselves (their `model.mesh` is null; discretize() gives each its subdomain as
 /// Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
 ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
 

@@ -27,7 +27,7 @@ struct RunResult {
   double graphSeconds = 0.0;        ///< the interaction couplings of the matrix graph
   double pathSeconds = 0.0;         ///< the whole path, failed attempts included
   double meshSeconds = 0.0;         ///< building the problem: the mesh (gmsh, generators) and its checks
-  double distributionSeconds = 0.0;  ///< partition, each rank's part, dofs, problem and solver set-up
+  double distributionSeconds = 0.0;  ///< partition, each rank's subdomain, dofs, problem and solver set-up
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
   long linearSolves = 0;            ///< linear solves of Newton and relaxation (LOCA's not counted)

@@ -4,7 +4,7 @@
 // Cells are numbered mesh-wide (block after block); each is evaluated by
 // exactly one rank. The partition is geometric by default (Zoltan2's
 // multi-jagged cuts of the cell centroids, weighted by the size of a cell's
-// tangent): compact parts with short interfaces, whatever order the mesh
+// tangent): compact subdomains with short interfaces, whatever order the mesh
 // generator numbered the cells in. Contiguous: ranges of the mesh-wide
 // numbering. A node is owned by the lowest rank whose cells touch it.
 // Nodes are named two ways: by their index in the mesh (the arrays of this
@@ -22,17 +22,17 @@
 namespace cgcm::assembly {
 
 /// How a DofMap finds the cells it evaluates. Geometric and Contiguous split a
-/// mesh that every rank holds whole; LocalPart: the mesh is this rank's part of
-/// a distributed mesh (mesh::localPart), all its cells are this rank's.
-enum class CellPartition { Geometric, Contiguous, LocalPart };
+/// mesh that every rank holds whole; Subdomain: the mesh is this rank's subdomain of
+/// a distributed mesh (mesh::subdomain), all its cells are this rank's.
+enum class CellPartition { Geometric, Contiguous, Subdomain };
 /// "geometric" or "contiguous"; throws InputError otherwise.
 CellPartition parseCellPartition(const std::string& name);
 /// The rank of every mesh-wide cell of `mesh` (held whole by every rank), the
 /// same list on every rank: Geometric or Contiguous. Collective.
 std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition);
-/// The same for `numParts` ranks, computed by one process that holds the whole mesh (a root that sends
-/// the parts: mesh::localPart).
-std::vector<int> partitionCells(const mesh::Mesh& mesh, CellPartition partition, int numParts);
+/// The same for `numSubdomains` ranks, computed by one process that holds the whole mesh (a root that sends
+/// the subdomains: mesh::subdomain).
+std::vector<int> partitionCells(const mesh::Mesh& mesh, CellPartition partition, int numSubdomains);
 
 class DofMap {
  public:
@@ -56,7 +56,7 @@ class DofMap {
   const std::vector<LocalIndex>& localCells(std::size_t block) const { return localCells_[block]; }
   /// Rank that evaluates the mesh-wide cell `cell`.
   int cellOwner(LocalIndex cell) const { return cellOwner_[cell]; }
-  /// Whether this rank evaluates `cell` (false for -1: a cell of another rank's part).
+  /// Whether this rank evaluates `cell` (false for -1: a cell of another rank's subdomain).
   bool evaluatesCell(LocalIndex cell) const { return cell >= 0 && cellOwner_[cell] == comm_->getRank(); }
   bool ownsNode(LocalIndex node) const { return ownsNode_[node] != 0; }
   /// The global id of mesh node `node`.

@@ -72,7 +72,7 @@ struct Model {
 };
 
 /// Everything of a model but its mesh, as bytes, and back (the mesh stays null):
-/// what the other ranks receive of rank 0's model (the mesh travels in parts, LocalPart.hpp).
+/// what the other ranks receive of rank 0's model (the mesh travels in subdomains, Subdomain.hpp).
 void put(core::ByteWriter& out, const Model& model);
 Model getModel(core::ByteReader& in);
 

@@ -1,7 +1,7 @@
 #pragma once
 // In-memory finite-element mesh of one or more bodies.
 //
-// A whole mesh, or a rank's part of one (mesh::localPart); the distribution
+// A whole mesh, or a rank's subdomain of one (mesh::subdomain); the distribution
 // of degrees of freedom and the element partition are made by the assembly
 // package. Node indices are 0-based indices into this mesh's arrays; a node's
 // global id, which labels its degrees of freedom across the ranks, is its
@@ -29,7 +29,7 @@ struct ElementBlock {
   int body = 0;
   CellType type = CellType::Quad4;
   std::vector<LocalIndex> connectivity;  ///< nodesPerCell(type) node indices per cell
-  /// Per cell, its index in the whole mesh's block (a rank's part: mesh::localPart); empty: the cell's own.
+  /// Per cell, its index in the whole mesh's block (a rank's subdomain: mesh::subdomain); empty: the cell's own.
   std::vector<LocalIndex> cellIds;
   LocalIndex cellId(LocalIndex cell) const { return cellIds.empty() ? cell : cellIds[std::size_t(cell)]; }
   LocalIndex numCells() const { return LocalIndex(connectivity.size() / nodesPerCell(type)); }
@@ -43,8 +43,8 @@ struct Surface {
   int body = 0;
   int nodesPerFacet = 2;
   std::vector<LocalIndex> facets;
-  /// Per facet: the cell it bounds (mesh-wide cell index; in a rank's part of a distributed mesh the
-  /// part's cell, or -1 where another rank holds it: mesh::localPart).
+  /// Per facet: the cell it bounds (mesh-wide cell index; in a rank's subdomain of a distributed mesh the
+  /// subdomain's cell, or -1 where another rank holds it: mesh::subdomain).
   std::vector<LocalIndex> facetCells;
   LocalIndex numFacets() const { return LocalIndex(facets.size() / nodesPerFacet); }
 };

@@ -21,7 +21,7 @@ namespace cgcm::solver {
 
 struct Checkpoint {
   StepperState stepper;
-  Real lastLoad = 0.0;  ///< the continuity check's reference load
+  Real lastDisplacement = 0.0;  ///< the continuity check's reference u
   int exodusSteps = 0;  ///< steps in results.e (0 without Exodus output)
   std::vector<LoadPoint> curve;
   std::vector<Real> u, previous;  ///< by global dof (previous: empty unless stepper.havePrevious)

@@ -1,7 +1,7 @@
 #pragma once
 // Pseudo-arclength continuation with LOCA (a LOCA::Stepper on a
-// LOCA::Thyra::Group over the ModelEvaluator) in one entry of p(0): the load
-// u, or any other parameter the model exposes (e.g. gammaW).
+// LOCA::Thyra::Group over the ModelEvaluator) in one entry of p(0): the prescribed
+// displacement u, or any other parameter the model exposes (e.g. gammaW).
 //
 // On top of LOCA's stepper:
 // - folds: the parameter component dp/ds of LOCA's unit tangent changes

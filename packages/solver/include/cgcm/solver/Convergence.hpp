@@ -1,6 +1,6 @@
 #pragma once
 // The convergence test every accepted state passes, for Newton at a fixed
-// load and for the corrector of arc-length continuation alike: the unscaled
+// prescribed displacement and for the corrector of arc-length continuation alike: the unscaled
 // 2-norm of the residual f (force units: the internal force plus the
 // interaction force; constrained rows hold u_i - u_prescribed, which Newton
 // zeroes in one step) at or below an absolute force tolerance.

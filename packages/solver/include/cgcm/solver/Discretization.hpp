@@ -1,9 +1,9 @@
 #pragma once
 // From a problem's set-up (formulation, materials, the model of mesh::buildModel,
-// the interaction) to the discrete problem on the ranks: each rank's part of
+// the interaction) to the discrete problem on the ranks: each rank's subdomain of
 // the mesh and its dofs, the assembled problem, the Dirichlet conditions and
 // the ModelEvaluator. Rank 0 alone holds (meshes, reads) the whole mesh and
-// sends the others their parts.
+// sends the others their subdomains.
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
@@ -57,7 +57,7 @@ struct Distribution {
 };
 
 /// One rank: the set-up's mesh. Several: rank 0 partitions its mesh (setup.partition) and sends each
-/// rank its part (mesh::localPart, with the contact probe's apex nodes); Method 1: the whole mesh to
+/// rank its subdomain (mesh::subdomain, with the contact probe's apex nodes); Method 1: the whole mesh to
 /// every rank. The other ranks' `setup.model.mesh`, if any, is not read. Collective.
 Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const ProblemSetup& setup);
 
@@ -65,7 +65,7 @@ Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 /// interaction when there is one), Dirichlet conditions and ModelEvaluator,
 /// whose p(0) is (u, gammaW, gammaL) with an interaction and (u) without.
 struct Discretization {
-  /// The mesh this rank assembles: on several ranks its part of the set-up's mesh (mesh::localPart: its
+  /// The mesh this rank assembles: on several ranks its subdomain of the set-up's mesh (mesh::subdomain: its
   /// cells, their nodes and the whole surfaces), except with Method 1, whose pairs need the whole mesh.
   std::shared_ptr<const mesh::Mesh> mesh;
   Teuchos::RCP<assembly::DofMap> dofs;

@@ -47,7 +47,7 @@ struct LoadPathSettings {
 
 struct StepInfo {
   int step = 0;         ///< accepted states so far (0 = initial state)
-  Real load = 0.0;
+  Real displacement = 0.0;  ///< the prescribed displacement u of the state
   NewtonResult newton;
   int cutbacks = 0;     ///< failed attempts before this step converged
   bool jump = false;    ///< reached by a jump from a fold to another stable branch
@@ -59,11 +59,11 @@ struct StepInfo {
 /// (a checkpoint, see run()).
 struct StepperState {
   std::size_t segment = 1;  ///< the waypoint being approached (index into the path)
-  Real load = 0.0;          ///< u of the accepted state
+  Real displacement = 0.0;  ///< u of the accepted state
   Real increment = 0.0;     ///< the next step's increment
   int step = 0;             ///< accepted states so far
   bool havePrevious = false;  ///< the secant predictor has a state before this one
-  Real previousLoad = 0.0;    ///< u of that state
+  Real previousDisplacement = 0.0;    ///< u of that state
 };
 
 class LoadStepper {

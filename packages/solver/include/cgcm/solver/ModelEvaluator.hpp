@@ -1,7 +1,7 @@
 #pragma once
 // The discrete problem as a Thyra ModelEvaluator: state x = nodal
 // displacements (owned dofs), parameter vector p(0) = the named scalar
-// parameters (first the load u, the prescribed displacement; then any others
+// parameters (first the prescribed displacement u; then any others
 // the problem exposes, e.g. gammaW), residual f(x, p) = f_int(x) + f_C(x; p)
 // with Dirichlet rows x_i - (offset_i + scale_i u), and W = df/dx on the
 // assembled Tpetra matrix. NOX (Newton) and LOCA (continuation) drive it.
@@ -27,7 +27,7 @@ using assembly::Matrix;
 class ModelEvaluator : public ParameterizedModel {
  public:
   /// Name of p(0)[0], the prescribed displacement.
-  static constexpr const char* kLoadParameterName = "u";
+  static constexpr const char* kDisplacementParameterName = "u";
 
   ModelEvaluator(std::shared_ptr<assembly::Problem> problem,
                  std::shared_ptr<assembly::DirichletConditions> dirichlet,
@@ -47,8 +47,9 @@ class ModelEvaluator : public ParameterizedModel {
   void growGraph(const Vector& x, bool widen) override { problem_->updateInteractionGraph(x, true, widen ? 2.0 : 1.0); }
   bool graphOutdated() const override { return problem_->graphOutdated(); }
   void clearGraphOutdated() override { problem_->clearGraphOutdated(); }
-  void setLoad(Real u) { setParameter(0, u); }
-  Real load() const { return parameter(0); }
+  /// The prescribed displacement u, p(0)[0].
+  void setDisplacement(Real u) { setParameter(0, u); }
+  Real displacement() const { return parameter(0); }
 
   /// Residual before boundary conditions (the internal force, whose
   /// constrained entries are the reactions) at (x, p). Collective.

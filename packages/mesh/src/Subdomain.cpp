@@ -1,4 +1,4 @@
-#include "cgcm/mesh/LocalPart.hpp"
+#include "cgcm/mesh/Subdomain.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,12 +8,12 @@
 
 namespace cgcm::mesh {
 
-Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, const std::vector<LocalIndex>& alsoKept) {
-  if (!whole.nodeIds.empty()) throw std::logic_error("mesh::localPart: the mesh is a part already");
+Mesh subdomain(const Mesh& whole, const std::vector<int>& cellOwner, int rank, const std::vector<LocalIndex>& alsoKept) {
+  if (!whole.nodeIds.empty()) throw std::logic_error("mesh::subdomain: the mesh is a subdomain already");
   if (!whole.blocks.empty() && !whole.blocks[0].cellIds.empty())
-    throw std::logic_error("mesh::localPart: the mesh is a part already");
+    throw std::logic_error("mesh::subdomain: the mesh is a subdomain already");
   if (cellOwner.size() != std::size_t(whole.numCells()))
-    throw std::logic_error("mesh::localPart: " + std::to_string(cellOwner.size()) + " cell owners for " +
+    throw std::logic_error("mesh::subdomain: " + std::to_string(cellOwner.size()) + " cell owners for " +
                            std::to_string(whole.numCells()) + " cells");
   const LocalIndex numNodes = whole.numNodes();
   std::vector<char> kept(std::size_t(numNodes), 0);
@@ -33,20 +33,20 @@ Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
     for (LocalIndex n : block.connectivity) inCell[std::size_t(n)] = 1;
   const auto orphan = std::find(inCell.begin(), inCell.end(), 0);
   if (orphan != inCell.end())
-    throw std::logic_error("mesh::localPart: node " + std::to_string(orphan - inCell.begin()) + " belongs to no cell");
+    throw std::logic_error("mesh::subdomain: node " + std::to_string(orphan - inCell.begin()) + " belongs to no cell");
   for (const auto& s : whole.surfaces)
     for (LocalIndex n : s.facets) kept[std::size_t(n)] = 1;
   for (LocalIndex n : alsoKept) kept.at(std::size_t(n)) = 1;
 
-  Mesh part;
-  part.dim = whole.dim;
-  part.numBodies = whole.numBodies;
-  std::vector<LocalIndex> index(std::size_t(numNodes), -1);  // whole -> part
+  Mesh sub;
+  sub.dim = whole.dim;
+  sub.numBodies = whole.numBodies;
+  std::vector<LocalIndex> index(std::size_t(numNodes), -1);  // whole -> subdomain
   for (LocalIndex n = 0; n < numNodes; ++n) {
     if (!kept[std::size_t(n)]) continue;
-    index[std::size_t(n)] = LocalIndex(part.nodeIds.size());
-    part.nodeIds.push_back(n);
-    for (int i = 0; i < whole.dim; ++i) part.coords.push_back(whole.coord(n, i));
+    index[std::size_t(n)] = LocalIndex(sub.nodeIds.size());
+    sub.nodeIds.push_back(n);
+    for (int i = 0; i < whole.dim; ++i) sub.coords.push_back(whole.coord(n, i));
   }
   cell = 0;
   for (const auto& block : whole.blocks) {
@@ -60,10 +60,10 @@ Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
       b.cellIds.push_back(c);
       for (int a = 0; a < npc; ++a) b.connectivity.push_back(index[std::size_t(block.connectivity[std::size_t(c) * npc + a])]);
     }
-    part.blocks.push_back(std::move(b));
+    sub.blocks.push_back(std::move(b));
   }
   for (const auto& [name, nodes] : whole.nodeSets) {
-    auto& mine = part.nodeSets[name];
+    auto& mine = sub.nodeSets[name];
     for (LocalIndex n : nodes)
       if (index[std::size_t(n)] >= 0) mine.push_back(index[std::size_t(n)]);
   }
@@ -73,9 +73,9 @@ Mesh localPart(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
     t.nodesPerFacet = s.nodesPerFacet;
     for (LocalIndex n : s.facets) t.facets.push_back(index[std::size_t(n)]);
     for (LocalIndex c : s.facetCells) t.facetCells.push_back(cellInPart[std::size_t(c)]);
-    part.surfaces.push_back(std::move(t));
+    sub.surfaces.push_back(std::move(t));
   }
-  return part;
+  return sub;
 }
 
 std::vector<char> toBytes(const Mesh& mesh) {
