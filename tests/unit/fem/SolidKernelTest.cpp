@@ -2,13 +2,16 @@
 // (formulation × element) pair: force = derivative of energy, tangent =
 // derivative of force (central differences), rigid-motion invariance, patch
 // test, rejection of inverted elements, and the homogeneous uniaxial state
-// against the closed-form Neo-Hookean stress.
+// against the closed-form Neo-Hookean stress; and of the elements: shape
+// functions interpolate and reproduce their polynomial space, quadrature
+// rules are exact to their stated degree.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 #include <string>
 #include <tuple>
@@ -20,10 +23,15 @@
 using cgcm::Mat3;
 using cgcm::Real;
 using cgcm::fem::Axisymmetric;
+using cgcm::fem::Hex20;
+using cgcm::fem::Hex27;
 using cgcm::fem::Hex8;
 using cgcm::fem::PlaneStrain;
 using cgcm::fem::Quad4;
+using cgcm::fem::Quad8;
+using cgcm::fem::Quad9;
 using cgcm::fem::SolidKernel;
+using cgcm::fem::Tet10;
 using cgcm::fem::Tet4;
 using cgcm::fem::ThreeD;
 using cgcm::material::NeoHookean;
@@ -39,10 +47,81 @@ constexpr bool isAxisymmetric() {
 }
 
 // ---------------------------------------------------------------------------
+// Element geometry
+
+/// Whether E's parent domain is the unit simplex (node 0 at the origin) rather
+/// than the cube [−1, 1]^dim (node 0 at (−1, …, −1)).
+template <class E>
+bool isSimplex() {
+  Real xi[E::dim];
+  E::parentCoordinates(0, xi);
+  return xi[0] == 0.0;
+}
+
+/// The corners of E are its nodes 0 .. numCorners − 1, those of the linear element
+/// of its shape (Quad4, Hex8, Tet4).
+template <class E>
+int numCorners() {
+  return isSimplex<E>() ? E::dim + 1 : 1 << E::dim;
+}
+
+/// Polynomial order: 1 for the linear elements, 2 for those with nodes beyond the corners.
+template <class E>
+int order() {
+  return E::numNodes > numCorners<E>() ? 2 : 1;
+}
+
+/// Shape functions of the linear element with E's corners at ξ (numCorners<E>() of them).
+template <class E>
+void linearShape(const Real (&xi)[E::dim], Real (&N)[8]) {
+  if constexpr (E::dim == 2) {
+    Real n[4], d[4][2];
+    Quad4::shape(xi, n, d);
+    std::copy(n, n + 4, N);
+  } else if (isSimplex<E>()) {
+    Real n[4], d[4][3];
+    Tet4::shape(xi, n, d);
+    std::copy(n, n + 4, N);
+  } else {
+    Real n[8], d[8][3];
+    Hex8::shape(xi, n, d);
+    std::copy(n, n + 8, N);
+  }
+}
+
+/// Places the nodes beyond the corners where the linear map of the corners puts
+/// them: a straight-sided element (the identity for linear elements).
+template <class E>
+void straightSided(Real (&x)[E::numNodes][E::dim]) {
+  for (int a = numCorners<E>(); a < E::numNodes; ++a) {
+    Real xi[E::dim], N[8];
+    E::parentCoordinates(a, xi);
+    linearShape<E>(xi, N);
+    for (int i = 0; i < E::dim; ++i) {
+      x[a][i] = 0.0;
+      for (int b = 0; b < numCorners<E>(); ++b) x[a][i] += N[b] * x[b][i];
+    }
+  }
+}
+
+template <class E>
+const char* elementName() {
+  if constexpr (std::is_same_v<E, Quad4>) return "Quad4";
+  if constexpr (std::is_same_v<E, Quad8>) return "Quad8";
+  if constexpr (std::is_same_v<E, Quad9>) return "Quad9";
+  if constexpr (std::is_same_v<E, Hex8>) return "Hex8";
+  if constexpr (std::is_same_v<E, Hex20>) return "Hex20";
+  if constexpr (std::is_same_v<E, Hex27>) return "Hex27";
+  if constexpr (std::is_same_v<E, Tet4>) return "Tet4";
+  if constexpr (std::is_same_v<E, Tet10>) return "Tet10";
+  return "unnamed element";
+}
+
+// ---------------------------------------------------------------------------
 // Geometry helpers
 
-/// Reference element of unit size: Quad4/Hex8 on [0,1]^dim, Tet4 the unit corner
-/// tetrahedron; axisymmetric elements shifted to R ∈ [1, 2].
+/// Reference element of unit size: the cube elements on [0,1]^dim, the
+/// tetrahedra the unit corner tetrahedron; axisymmetric elements shifted to R ∈ [1, 2].
 template <class Kernel>
 void unitElement(Real (&X)[Kernel::numNodes][Kernel::dim]) {
   using E = typename Kernel::ElementType;
@@ -50,19 +129,21 @@ void unitElement(Real (&X)[Kernel::numNodes][Kernel::dim]) {
     Real xi[Kernel::dim];
     E::parentCoordinates(a, xi);
     for (int i = 0; i < Kernel::dim; ++i) {
-      X[a][i] = std::is_same_v<E, Tet4> ? xi[i] : 0.5 * (xi[i] + 1.0);
+      X[a][i] = isSimplex<E>() ? xi[i] : 0.5 * (xi[i] + 1.0);
     }
     if (isAxisymmetric<Kernel>()) X[a][0] += 1.0;
   }
 }
 
-/// A randomly distorted reference element (each node moved by up to `distortion`).
+/// A randomly distorted reference element (each node moved by up to
+/// `distortion` / order: quadratic elements' nodes are half as far apart).
 template <class Kernel>
 void randomElement(std::mt19937& rng, Real distortion, Real (&X)[Kernel::numNodes][Kernel::dim]) {
   std::uniform_real_distribution<Real> u(-distortion, distortion);
+  const Real scale = 1.0 / order<typename Kernel::ElementType>();
   unitElement<Kernel>(X);
   for (int a = 0; a < Kernel::numNodes; ++a)
-    for (int i = 0; i < Kernel::dim; ++i) X[a][i] += u(rng);
+    for (int i = 0; i < Kernel::dim; ++i) X[a][i] += scale * u(rng);
 }
 
 /// Random deformation gradient I + perturbation (amplitude), det > 0.5.
@@ -97,8 +178,9 @@ void randomCurrent(std::mt19937& rng, const Real (&X)[Kernel::numNodes][Kernel::
   Real c[3] = {u(rng), u(rng), u(rng)};
   if (isAxisymmetric<Kernel>()) c[0] = 0.0;
   deform<Kernel>(F, c, X, x);
+  const Real scale = 1.0 / order<typename Kernel::ElementType>();
   for (int a = 0; a < Kernel::numNodes; ++a)
-    for (int i = 0; i < Kernel::dim; ++i) x[a][i] += u(rng);
+    for (int i = 0; i < Kernel::dim; ++i) x[a][i] += scale * u(rng);
 }
 
 template <class Kernel>
@@ -109,68 +191,136 @@ Real maxAbsVec(const Real (&v)[Kernel::numDofs]) {
 }
 
 // ---------------------------------------------------------------------------
-// Small structured patches: (n × n [× n]) cells of size h; Tet4 splits every
-// cube into 6 tetrahedra (Kuhn triangulation, conforming).
+// Small structured patches: (n × n [× n]) cells of size h; the tetrahedra split
+// every cube into 6 (Kuhn triangulation, conforming). Each cell's nodes are
+// its parent nodes mapped by the linear map of its corners (mid-edge nodes at
+// edge midpoints, ...), nodes at the same place shared between cells.
 
 struct Patch {
   int dim = 0;
   std::vector<std::array<Real, 3>> X;   // reference coordinates
   std::vector<std::vector<int>> cells;  // connectivity
   std::vector<int> interior;            // interior node ids
+  std::vector<bool> vertex;             // whether a node is a vertex of the cell grid
+  int centre = -1;                      // the grid vertex at the centre of the patch (n even)
 };
 
+/// The patch, its grid vertices numbered first (i + m j + m² k, m = n + 1); the
+/// centre vertex moved by `shift` (n even) before the other nodes are placed, so
+/// that the cells stay straight-sided.
 template <class Kernel>
-Patch makePatch(int n, Real h, Real rOffset) {
+Patch makePatch(int n, Real h, Real rOffset, std::array<Real, 3> shift = {0.0, 0.0, 0.0}) {
   using E = typename Kernel::ElementType;
   constexpr int dim = Kernel::dim;
-  Patch p;
-  p.dim = dim;
+  const int p = order<E>();
+  Patch patch;
+  patch.dim = dim;
   const int m = n + 1;
   const int nz = dim == 3 ? m : 1;
-  auto id = [&](int i, int j, int k) { return i + m * j + m * m * k; };
+  // Nodes by their place on the lattice of spacing h / p.
+  std::map<std::array<int, 3>, int> byPlace;
+  auto interiorPlace = [&](const std::array<int, 3>& l) {
+    for (int i = 0; i < dim; ++i)
+      if (l[i] <= 0 || l[i] >= p * n) return false;
+    return true;
+  };
+  auto add = [&](const std::array<int, 3>& l, const std::array<Real, 3>& X, bool isVertex) {
+    const int id = int(patch.X.size());
+    byPlace[l] = id;
+    patch.X.push_back(X);
+    patch.vertex.push_back(isVertex);
+    if (interiorPlace(l)) patch.interior.push_back(id);
+    return id;
+  };
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i) {
-        p.X.push_back({i * h + rOffset, j * h, k * h});
-        const bool inner = i > 0 && i < n && j > 0 && j < n && (dim == 2 || (k > 0 && k < n));
-        if (inner) p.interior.push_back(id(i, j, k));
+        std::array<Real, 3> X{i * h + rOffset, j * h, k * h};
+        if (n % 2 == 0 && i == n / 2 && j == n / 2 && (dim == 2 || k == n / 2)) {
+          for (int d = 0; d < dim; ++d) X[d] += shift[d];
+          patch.centre = int(patch.X.size());
+        }
+        add({p * i, p * j, p * k}, X, true);
       }
+
+  // One cell from its corners' grid indices: its nodes, created where new.
+  auto addCell = [&](std::vector<std::array<int, 3>> corners) {
+    if (isSimplex<E>()) {
+      // orient it positively in the reference configuration
+      Real e[3][3];
+      for (int s = 0; s < 3; ++s)
+        for (int i = 0; i < 3; ++i)
+          e[s][i] = patch.X[byPlace.at({p * corners[s + 1][0], p * corners[s + 1][1], p * corners[s + 1][2]})][i] -
+                    patch.X[byPlace.at({p * corners[0][0], p * corners[0][1], p * corners[0][2]})][i];
+      const Real vol = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                       e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+      if (vol < 0.0) std::swap(corners[1], corners[2]);
+    }
+    std::vector<int> cell;
+    for (int a = 0; a < E::numNodes; ++a) {
+      Real xi[dim], N[8];
+      E::parentCoordinates(a, xi);
+      linearShape<E>(xi, N);
+      Real l[3] = {0.0, 0.0, 0.0};
+      std::array<Real, 3> X{0.0, 0.0, 0.0};
+      for (size_t b = 0; b < corners.size(); ++b) {
+        const int v = byPlace.at({p * corners[b][0], p * corners[b][1], p * corners[b][2]});
+        for (int i = 0; i < 3; ++i) {
+          l[i] += N[b] * p * corners[b][i];
+          X[i] += N[b] * patch.X[v][i];
+        }
+      }
+      const std::array<int, 3> place{int(std::lround(l[0])), int(std::lround(l[1])), int(std::lround(l[2]))};
+      const auto found = byPlace.find(place);
+      cell.push_back(found != byPlace.end() ? found->second : add(place, X, false));
+    }
+    patch.cells.push_back(cell);
+  };
+
   const int cz = dim == 3 ? n : 1;
   for (int k = 0; k < cz; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        if constexpr (std::is_same_v<E, Quad4>) {
-          p.cells.push_back({id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0)});
-        } else if constexpr (std::is_same_v<E, Hex8>) {
-          p.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                             id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+        if (!isSimplex<E>()) {
+          std::vector<std::array<int, 3>> corners;
+          for (int a = 0; a < numCorners<E>(); ++a) {
+            Real xi[dim];
+            E::parentCoordinates(a, xi);
+            corners.push_back({i + (xi[0] > 0.0), j + (xi[1] > 0.0), dim == 3 ? k + (xi[dim - 1] > 0.0) : 0});
+          }
+          addCell(corners);
         } else {
           const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
           for (const auto& perm : perms) {
             int c[3] = {0, 0, 0};
-            std::vector<int> tet{id(i, j, k)};
+            std::vector<std::array<int, 3>> corners{{i, j, k}};
             for (int s = 0; s < 3; ++s) {
               c[perm[s]] = 1;
-              tet.push_back(id(i + c[0], j + c[1], k + c[2]));
+              corners.push_back({i + c[0], j + c[1], k + c[2]});
             }
-            p.cells.push_back(tet);
+            addCell(corners);
           }
         }
       }
-  return p;
+  return patch;
 }
 
-/// Makes every tetrahedron of the patch positively oriented in the reference configuration.
-void orientTets(Patch& p) {
-  for (auto& t : p.cells) {
-    if (t.size() != 4) continue;
-    Real e[3][3];
-    for (int s = 0; s < 3; ++s)
-      for (int i = 0; i < 3; ++i) e[s][i] = p.X[t[s + 1]][i] - p.X[t[0]][i];
-    const Real vol = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                     e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                     e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-    if (vol < 0.0) std::swap(t[1], t[2]);
+/// Curves the cells of a patch of cube elements of order 2: every interior node
+/// that is not a grid vertex moved by up to 0.05 h (the patch test holds on
+/// curved isoparametric cells when the rule integrates their Jacobians exactly,
+/// as 3-point Gauss does for Quad8/9, Hex20/27; the 4-point rule of Tet10
+/// does not, so its cells stay straight).
+template <class Kernel>
+void curveCells(Patch& p, Real h) {
+  using E = typename Kernel::ElementType;
+  if (isSimplex<E>() || order<E>() == 1) return;
+  for (int c : p.interior) {
+    if (p.vertex[c]) continue;
+    const Real s = 0.05 * h;
+    p.X[c][0] += s * std::sin(1.3 * c + 0.4);
+    p.X[c][1] += s * std::cos(0.7 * c + 0.1);
+    if (p.dim == 3) p.X[c][2] += s * std::sin(2.1 * c + 0.9);
   }
 }
 
@@ -199,9 +349,13 @@ bool assemble(const Patch& p, const std::vector<std::array<Real, 3>>& x, const N
 template <class Kernel>
 class SolidKernelTest : public ::testing::Test {};
 
-// Every kernel fem::withSolidKernel dispatches to (the test below checks that none is missing).
-using KernelTuple = std::tuple<SolidKernel<PlaneStrain, Quad4>, SolidKernel<Axisymmetric, Quad4>,
-                               SolidKernel<ThreeD, Hex8>, SolidKernel<ThreeD, Tet4>>;
+// Every kernel fem::withSolidKernel dispatches to (the test below checks that none is
+// missing), and those of the quadratic elements, which it does not reach yet.
+using KernelTuple =
+    std::tuple<SolidKernel<PlaneStrain, Quad4>, SolidKernel<Axisymmetric, Quad4>, SolidKernel<ThreeD, Hex8>,
+               SolidKernel<ThreeD, Tet4>, SolidKernel<PlaneStrain, Quad8>, SolidKernel<Axisymmetric, Quad8>,
+               SolidKernel<PlaneStrain, Quad9>, SolidKernel<Axisymmetric, Quad9>, SolidKernel<ThreeD, Tet10>,
+               SolidKernel<ThreeD, Hex20>, SolidKernel<ThreeD, Hex27>>;
 template <class Tuple>
 struct TestTypesOf;
 template <class... K>
@@ -215,10 +369,7 @@ using Kernels = TestTypesOf<KernelTuple>::type;
 struct KernelNames {
   template <class T>
   static std::string GetName(int) {
-    return std::string(T::FormulationType::name) +
-           (std::is_same_v<typename T::ElementType, Quad4>   ? "Quad4"
-            : std::is_same_v<typename T::ElementType, Hex8> ? "Hex8"
-                                                             : "Tet4");
+    return std::string(T::FormulationType::name) + elementName<typename T::ElementType>();
   }
 };
 TYPED_TEST_SUITE(SolidKernelTest, Kernels, KernelNames);
@@ -361,18 +512,16 @@ TYPED_TEST(SolidKernelTest, RigidMotionGivesZeroResidual) {
 }
 
 // (4) Patch test: a homogeneous deformation of a distorted patch gives zero
-// force at the interior node(s).
+// force at the interior nodes. The patch is 2 × 2 (× 2) cells (48 tetrahedra)
+// sharing their nodes, its centre vertex moved; the quadratic cube cells are
+// curved as well.
 TYPED_TEST(SolidKernelTest, PatchTestHomogeneousDeformation) {
   using K = TypeParam;
   constexpr int dim = K::dim;
   const Real tol = 1e-12;  // relative to the largest assembled nodal force
-  Patch p = makePatch<K>(2, 1.0, isAxisymmetric<K>() ? 1.0 : 0.0);
-  ASSERT_EQ(p.interior.size(), 1u);
-  const int c = p.interior[0];
-  p.X[c][0] += 0.2;
-  p.X[c][1] -= 0.15;
-  if (dim == 3) p.X[c][2] += 0.1;
-  orientTets(p);
+  Patch p = makePatch<K>(2, 1.0, isAxisymmetric<K>() ? 1.0 : 0.0, {0.2, -0.15, dim == 3 ? 0.1 : 0.0});
+  curveCells<K>(p, 1.0);
+  ASSERT_FALSE(p.interior.empty());
 
   std::mt19937 rng(404);
   for (VolumetricLaw law : kLaws) {
@@ -401,9 +550,10 @@ TYPED_TEST(SolidKernelTest, PatchTestHomogeneousDeformation) {
       Real rmax = 0.0;
       for (Real v : R) rmax = std::max(rmax, std::abs(v));
       ASSERT_GT(rmax, 1e-3);
-      for (int i = 0; i < dim; ++i)
-        EXPECT_LE(std::abs(R[c * dim + i]), tol * rmax) << cgcm::material::toString(law) << " trial " << trial
-                                                        << " component " << i;
+      for (int c : p.interior)
+        for (int i = 0; i < dim; ++i)
+          EXPECT_LE(std::abs(R[c * dim + i]), tol * rmax)
+              << cgcm::material::toString(law) << " trial " << trial << " node " << c << " component " << i;
     }
   }
 }
@@ -471,12 +621,8 @@ TYPED_TEST(SolidKernelTest, SmallStrainIsTheLinearisation) {
     }
   }
   // patch test: a homogeneous displacement gradient leaves the interior node in equilibrium
-  Patch p = makePatch<K>(2, 1.0, isAxisymmetric<K>() ? 1.0 : 0.0);
-  const int c = p.interior[0];
-  p.X[c][0] += 0.2;
-  p.X[c][1] -= 0.15;
-  if (K::dim == 3) p.X[c][2] += 0.1;
-  orientTets(p);
+  Patch p = makePatch<K>(2, 1.0, isAxisymmetric<K>() ? 1.0 : 0.0, {0.2, -0.15, K::dim == 3 ? 0.1 : 0.0});
+  curveCells<K>(p, 1.0);
   NeoHookean small = NeoHookean::fromYoungPoisson(1.0, 0.3);
   small.kinematics = Kinematics::SmallStrain;
   Mat3 F = randomF(rng, 0.3, K::dim);
@@ -491,7 +637,9 @@ TYPED_TEST(SolidKernelTest, SmallStrainIsTheLinearisation) {
   ASSERT_TRUE(assemble<K>(p, x, small, R));
   Real rmax = 0.0;
   for (Real v : R) rmax = std::max(rmax, std::abs(v));
-  for (int i = 0; i < K::dim; ++i) EXPECT_LE(std::abs(R[c * K::dim + i]), 1e-12 * rmax) << "component " << i;
+  for (int c : p.interior)
+    for (int i = 0; i < K::dim; ++i)
+      EXPECT_LE(std::abs(R[c * K::dim + i]), 1e-12 * rmax) << "node " << c << " component " << i;
 }
 
 // (5) Inverted or degenerate elements are rejected.
@@ -515,14 +663,16 @@ TYPED_TEST(SolidKernelTest, InvertedElementReturnsFalse) {
   for (int a = 0; a < K::numNodes; ++a) x[a][mirrored] = -x[a][mirrored];
   expectRejected("mirrored");
 
-  // One node pushed through the element: inverted at some quadrature points.
+  // One corner pushed through the element (the other nodes on the straight
+  // sides): inverted at some quadrature points.
   std::copy(&X[0][0], &X[0][0] + K::numDofs, &x[0][0]);
-  if constexpr (std::is_same_v<E, Tet4>) {
+  if (isSimplex<E>()) {
     x[3][2] = -0.5;
   } else {
-    const int far = std::is_same_v<E, Quad4> ? 2 : 6;  // node opposite node 0
+    const int far = numCorners<E>() - 2;  // the corner opposite node 0
     for (int i = 0; i < K::dim; ++i) x[far][i] = X[0][i] + 0.05;
   }
+  straightSided<E>(x);
   expectRejected("node pushed through");
 
   // The reference element inverted as well.
@@ -564,9 +714,8 @@ TYPED_TEST(SolidKernelTest, UniaxialStretchReactionMatchesClosedForm) {
     Real sig[3];
     for (int i = 0; i < 3; ++i) sig[i] = (p + mat.mu * (lam3[i] * lam3[i] - 1.0)) / Jt;
 
-    // One cell (Tet4: the box split into 6 tetrahedra) of size L, origin at 0 (R0 in axisymmetry).
+    // One cell (tetrahedra: the box split into 6) of size L, origin at 0 (R0 in axisymmetry).
     Patch patch = makePatch<K>(1, 1.0, 0.0);
-    orientTets(patch);
     for (auto& Xn : patch.X) {
       for (int i = 0; i < dim; ++i) Xn[i] *= L[i];
       if (isAxisymmetric<K>()) Xn[0] += R0;
@@ -667,6 +816,204 @@ TYPED_TEST(SolidKernelTest, ShapeFunctionsArePartitionOfUnity) {
     E::quadraturePoint(q, xi, w);
     wsum += w;
   }
-  const Real parentVolume = std::is_same_v<E, Tet4> ? 1.0 / 6.0 : std::pow(2.0, dim);
+  const Real parentVolume = isSimplex<E>() ? (dim == 3 ? 1.0 / 6.0 : 0.5) : std::pow(2.0, dim);
   EXPECT_NEAR(wsum, parentVolume, tol);
+}
+
+namespace {
+/// ξ^e (η^f ζ^g) and its gradient.
+template <int Dim>
+Real monomial(const int (&e)[Dim], const Real (&xi)[Dim], Real (&grad)[Dim]) {
+  Real m = 1.0;
+  for (int i = 0; i < Dim; ++i) m *= std::pow(xi[i], e[i]);
+  for (int j = 0; j < Dim; ++j) {
+    grad[j] = e[j] == 0 ? 0.0 : e[j] * std::pow(xi[j], e[j] - 1);
+    for (int i = 0; i < Dim; ++i)
+      if (i != j) grad[j] *= std::pow(xi[i], e[i]);
+  }
+  return m;
+}
+
+/// Every exponent tuple with entries 0 .. maxExponent.
+template <int Dim>
+std::vector<std::array<int, Dim>> exponents(int maxExponent) {
+  std::vector<std::array<int, Dim>> out;
+  int count = 1;
+  for (int i = 0; i < Dim; ++i) count *= maxExponent + 1;
+  for (int n = 0; n < count; ++n) {
+    std::array<int, Dim> e;
+    for (int i = 0, r = n; i < Dim; ++i, r /= maxExponent + 1) e[i] = r % (maxExponent + 1);
+    out.push_back(e);
+  }
+  return out;
+}
+
+/// Whether E's shape functions span the monomial with exponents e: P_p on the simplex,
+/// Q_p for the Lagrange cube elements ((p+1)^dim nodes), the serendipity space (at most
+/// one exponent above 1) for the others.
+template <class E, std::size_t Dim>
+bool spans(const std::array<int, Dim>& e) {
+  const int p = order<E>();
+  int sum = 0, max = 0, superlinear = 0;
+  for (int v : e) sum += v, max = std::max(max, v), superlinear += v > 1;
+  if (isSimplex<E>()) return sum <= p;
+  if (E::numNodes == int(std::pow(p + 1, E::dim))) return max <= p;
+  return max <= p && superlinear <= 1;
+}
+
+/// A random point of E's parent domain.
+template <class E>
+void randomParentPoint(std::mt19937& rng, Real (&xi)[E::dim]) {
+  if (isSimplex<E>()) {
+    std::uniform_real_distribution<Real> u(0.0, 1.0);
+    for (;;) {
+      Real sum = 0.0;
+      for (int i = 0; i < E::dim; ++i) sum += (xi[i] = u(rng));
+      if (sum <= 1.0) return;
+    }
+  }
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  for (int i = 0; i < E::dim; ++i) xi[i] = u(rng);
+}
+}  // namespace
+
+// Shape functions reproduce exactly the polynomials of their space, through
+// the interpolant Σ_a m(ξ_a) N_a(ξ) = m(ξ) and its gradient, at random points
+// of the parent domain: constants and linear fields (completeness) and the
+// quadratic ones of each element; the monomials of degree <= 2 in each
+// coordinate outside the space are not reproduced, and the space has as many
+// monomials as the element nodes.
+TYPED_TEST(SolidKernelTest, ShapeFunctionsReproduceTheirPolynomialSpace) {
+  using K = TypeParam;
+  using E = typename K::ElementType;
+  constexpr int dim = K::dim;
+  // Values of order 1 summed over <= 27 nodes; gradients up to ~4 per node.
+  const Real tolValue = 1e-14, tolGradient = 1e-13;
+  std::mt19937 rng(606);
+  std::vector<std::array<Real, dim>> points(10);
+  for (auto& pt : points) {
+    Real xi[dim];
+    randomParentPoint<E>(rng, xi);
+    std::copy(xi, xi + dim, pt.begin());
+  }
+  int spanned = 0;
+  for (const auto& ex : exponents<dim>(2)) {
+    int e[dim];
+    std::copy(ex.begin(), ex.end(), e);
+    Real nodal[E::numNodes];
+    for (int a = 0; a < E::numNodes; ++a) {
+      Real xa[dim], g[dim];
+      E::parentCoordinates(a, xa);
+      nodal[a] = monomial(e, xa, g);
+    }
+    Real worst = 0.0, worstGradient = 0.0;
+    for (const auto& pt : points) {
+      Real xi[dim], N[E::numNodes], dN[E::numNodes][dim], grad[dim];
+      std::copy(pt.begin(), pt.end(), xi);
+      E::shape(xi, N, dN);
+      const Real m = monomial(e, xi, grad);
+      Real v = 0.0, dv[dim] = {};
+      for (int a = 0; a < E::numNodes; ++a) {
+        v += nodal[a] * N[a];
+        for (int i = 0; i < dim; ++i) dv[i] += nodal[a] * dN[a][i];
+      }
+      worst = std::max(worst, std::abs(v - m));
+      for (int i = 0; i < dim; ++i) worstGradient = std::max(worstGradient, std::abs(dv[i] - grad[i]));
+    }
+    std::string name = "xi^(";
+    for (int i = 0; i < dim; ++i) name += std::to_string(e[i]) + (i + 1 < dim ? "," : ")");
+    if (spans<E>(ex)) {
+      ++spanned;
+      EXPECT_LE(worst, tolValue) << name;
+      EXPECT_LE(worstGradient, tolGradient) << name;
+    } else {
+      EXPECT_GT(std::max(worst, worstGradient), 1e-6) << name << " is reproduced but outside the element's space";
+    }
+  }
+  EXPECT_EQ(spanned, E::numNodes);
+}
+
+// The quadrature rule integrates over the parent domain exactly every monomial
+// of degree <= quadratureDegree in each coordinate (cube) or in total
+// (simplex), and not every one of the next degree (the stated degree is sharp).
+TYPED_TEST(SolidKernelTest, QuadratureIsExactToItsDegree) {
+  using K = TypeParam;
+  using E = typename K::ElementType;
+  constexpr int dim = K::dim;
+  const int degree = E::quadratureDegree;
+  const Real tol = 1e-14;  // absolute: integrals <= 8, sums of <= 27 terms
+  Real worstBeyond = 0.0;
+  for (const auto& ex : exponents<dim>(degree + 1)) {
+    int e[dim], sum = 0, max = 0;
+    std::copy(ex.begin(), ex.end(), e);
+    for (int v : e) sum += v, max = std::max(max, v);
+    // exact integral: Π 2/(e+1) over even exponents (cube); Π e_i! / (Σ e + dim)! (simplex)
+    Real exact = 1.0;
+    if (isSimplex<E>()) {
+      if (sum > degree + 1) continue;
+      for (int v : e) exact *= std::tgamma(v + 1.0);
+      exact /= std::tgamma(sum + dim + 1.0);
+    } else {
+      for (int v : e) exact *= v % 2 ? 0.0 : 2.0 / (v + 1);
+    }
+    Real q = 0.0;
+    for (int k = 0; k < E::numQp; ++k) {
+      Real xi[dim], w, g[dim];
+      E::quadraturePoint(k, xi, w);
+      q += w * monomial(e, xi, g);
+    }
+    const bool withinDegree = isSimplex<E>() ? sum <= degree : max <= degree;
+    if (withinDegree) {
+      EXPECT_NEAR(q, exact, tol) << "exponents " << e[0] << " " << e[1]
+                                 << (dim == 3 ? " " + std::to_string(e[dim - 1]) : "");
+    } else {
+      worstBeyond = std::max(worstBeyond, std::abs(q - exact));
+    }
+  }
+  EXPECT_GT(worstBeyond, 1e-6) << "the rule is exact beyond its stated degree " << degree;
+}
+
+namespace {
+/// Checks that node corners.size() + k (k = 0, 1, …) of E sits at the mean of the parent
+/// coordinates of the corners listed in between[k]: the node orders of Elements.hpp.
+template <class E>
+void expectNodesBetween(const std::vector<std::vector<int>>& between) {
+  SCOPED_TRACE(elementName<E>());
+  const int first = E::numNodes - int(between.size());
+  ASSERT_EQ(first, numCorners<E>());
+  for (size_t k = 0; k < between.size(); ++k) {
+    Real xi[E::dim], mean[E::dim] = {};
+    E::parentCoordinates(first + int(k), xi);
+    for (int c : between[k]) {
+      Real xc[E::dim];
+      E::parentCoordinates(c, xc);
+      for (int i = 0; i < E::dim; ++i) mean[i] += xc[i] / Real(between[k].size());
+    }
+    for (int i = 0; i < E::dim; ++i) EXPECT_EQ(xi[i], mean[i]) << "node " << first + int(k) << " coordinate " << i;
+  }
+}
+}  // namespace
+
+// The higher-order nodes in the Exodus II order (SEACAS Ioss: the edge and face
+// node tables of quad8/quad9, tetra10, hex20, hex27), each as the corners it
+// sits between.
+TEST(ElementNodeOrder, HigherOrderNodesAreTheExodusOnes) {
+  const std::vector<std::vector<int>> quadEdges{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  expectNodesBetween<Quad8>(quadEdges);
+  auto quad9 = quadEdges;
+  quad9.push_back({0, 1, 2, 3});
+  expectNodesBetween<Quad9>(quad9);
+
+  expectNodesBetween<Tet10>({{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}});
+
+  const std::vector<std::vector<int>> hexEdges{{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
+                                               {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  expectNodesBetween<Hex20>(hexEdges);
+  auto hex27 = hexEdges;
+  hex27.push_back({0, 1, 2, 3, 4, 5, 6, 7});  // 20: the centre
+  // 21-26: the faces of Exodus sides 5, 6, 4, 2, 1, 3 (-ζ, +ζ, -ξ, +ξ, -η, +η)
+  for (const std::vector<int>& face : std::vector<std::vector<int>>{
+           {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}})
+    hex27.push_back(face);
+  expectNodesBetween<Hex27>(hex27);
 }
