@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Draws one field of a cgcm results.e (Exodus II, read with python3-netcdf4)
 on the deformed 2D mesh: an element field (stress_*, J, von_mises) as
-coloured cells, a nodal field (displacement_*, traction_*, pressure) as
-coloured nodes, at one step (1-based; default: the step of the smallest P).
+coloured cells, a nodal field (displacement_*, traction_*, pressure,
+interaction_force_*) as coloured nodes, at one step (1-based; default: the
+step of the smallest P).
 
     plot_field.py output/demo/results.e --field von_mises --output field.png
     plot_field.py results.e --field stress_zz --step 40 --window 0 0.4 -0.2 0.2

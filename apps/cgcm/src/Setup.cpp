@@ -68,8 +68,8 @@ RCP<const ParameterList> validParameters() {
   output.set("Directory", "output", "folder for the load curve and the echoed parameters (created if missing)");
   output.set("Print Steps", true, "print one line per load step");
   output.set("Exodus", true,
-             "write results.e (Exodus II: displacement, stress and interaction traction fields per load-curve row; "
-             "ParaView)");
+             "write results.e (Exodus II: displacement, stress, interaction traction and force fields per "
+             "load-curve row; ParaView)");
   output.set("Max Memory", 0.0,
              "MB a run may use; a deck whose estimated memory (mesh size, measured per-unknown cost of the "
              "solver) exceeds it is refused before any work. 0: the memory this machine has available",

@@ -6,6 +6,16 @@
 
 namespace cgcm::assembly {
 
+std::string InteractionPart::nodeForces(const Vector& u, Vector& forces) {
+  Vector overlap(dofs_->overlapMap());  // zero
+  const Outcome out = assemble(u, overlap.getLocalViewDevice(Tpetra::Access::ReadWrite), nullptr);
+  if (exporter_.is_null()) exporter_ = Teuchos::rcp(new Export(dofs_->overlapMap(), dofs_->ownedMap()));
+  forces.putScalar(0.0);
+  forces.doExport(overlap, *exporter_, Tpetra::ADD);
+  forces.scale(-1.0);  // f_C is the part's residual: the force on the body is -f_C
+  return out.failure;
+}
+
 ReplicatedCoordinates::ReplicatedCoordinates(const DofMap& dofs, const mesh::Mesh& mesh,
                                              const std::vector<LocalIndex>& nodes)
     : mesh_(&mesh), coords_(mesh.coords) {

@@ -226,6 +226,18 @@ std::vector<std::array<Real, 3>> Problem::interactionForces() const {
   return interactionPart_ ? interactionPart_->forces() : std::vector<std::array<Real, 3>>{};
 }
 
+Teuchos::RCP<Vector> Problem::interactionNodeForces(const Vector& u) {
+  auto forces = Teuchos::rcp(new Vector(dofs_->ownedMap()));
+  if (!interactionPart_) return forces;
+  const auto t0 = Clock::now();
+  const std::string failure = interactionPart_->nodeForces(u, *forces);
+  timings_.interaction += secondsSince(t0);  // an evaluation of the interaction, as the others
+  timings_.search += interactionPart_->lastSearchSeconds();
+  const std::string first = firstOnAnyRank(*dofs_->comm(), failure);
+  if (!first.empty()) throw NumericalError(first);
+  return forces;
+}
+
 std::vector<std::pair<LocalIndex, LocalIndex>> Problem::interactionCouplings(const Vector& u, Real radius) {
   const auto t0 = Clock::now();
   auto wanted = interactionPart_->couplings(u, radius);

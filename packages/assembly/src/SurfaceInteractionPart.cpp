@@ -23,7 +23,7 @@ std::vector<LocalIndex> surfaceNodes(const interaction::SurfaceInteraction& si) 
 SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
                                                std::shared_ptr<interaction::SurfaceInteraction> interaction,
                                                Real searchRadiusFactor)
-    : dofs_(std::move(dofs)), mesh_(&mesh), dim_(dofs_->dofsPerNode()), interaction_(std::move(interaction)),
+    : InteractionPart(std::move(dofs)), mesh_(&mesh), dim_(dofs_->dofsPerNode()), interaction_(std::move(interaction)),
       searchRadiusFactor_(searchRadiusFactor), coords_(*dofs_, mesh, surfaceNodes(*interaction_)) {
   if (!(searchRadiusFactor > 1.0))
     throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +

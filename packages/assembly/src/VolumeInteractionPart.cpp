@@ -21,7 +21,7 @@ std::vector<LocalIndex> cellNodes(const mesh::Mesh& mesh) {
 VolumeInteractionPart::VolumeInteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
                                              std::shared_ptr<interaction::VolumeInteraction> interaction,
                                              Real searchRadiusFactor)
-    : dofs_(std::move(dofs)), interaction_(std::move(interaction)), searchRadiusFactor_(searchRadiusFactor),
+    : InteractionPart(std::move(dofs)), interaction_(std::move(interaction)), searchRadiusFactor_(searchRadiusFactor),
       // every node of every cell: the bodies' volumes near each other are not known in advance
       coords_(*dofs_, mesh, cellNodes(mesh)) {
   if (!(searchRadiusFactor > 1.0))

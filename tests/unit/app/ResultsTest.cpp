@@ -1,13 +1,16 @@
 // results.e of a run read back (ExodusReader): element blocks, variable
 // names, one step per load-curve row with the row's values, and the fields
 // against the homogeneous solution of uniaxial compression; on the sphere
-// benchmark the interaction traction where the bodies touch.
+// benchmark the interaction traction where the bodies touch and, with either
+// method, the nodal interaction force summed per body (body_forces.csv).
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,6 +44,48 @@ std::vector<std::string> csvHeader(const std::string& path) {
 double global(const io::ExodusReader& r, const std::string& name, int step) {
   const auto& names = r.globalNames();
   return r.globals(step).at(std::size_t(std::find(names.begin(), names.end(), name) - names.begin()));
+}
+
+// Per state of results.e, interaction_force_x/_y summed over each body's nodes against the body's row of
+// body_forces.csv (relative to the largest component of the state: the file's 12 digits); returns the
+// largest relative difference.
+double expectBodySumsAreTheBodyForces(const io::ExodusReader& r, const mesh::Mesh& mesh, const std::string& dir) {
+  std::vector<int> nodeBody(std::size_t(mesh.numNodes()), -1);
+  for (const auto& b : mesh.blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[std::size_t(n)] = b.body;
+  std::ifstream in(dir + "/body_forces.csv");
+  std::string line;
+  std::getline(in, line);  // step,u,body,Fx,Fy,Fz
+  std::vector<std::array<double, 3>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::string value;
+    std::vector<double> v;
+    while (std::getline(row, value, ',')) v.push_back(std::stod(value));
+    rows.push_back({v.at(3), v.at(4), v.at(5)});
+  }
+  const int bodies = mesh.numBodies;
+  EXPECT_EQ(rows.size(), std::size_t(r.numSteps() * bodies));
+  double worst = 0.0;
+  for (int s = 1; s <= r.numSteps() && rows.size() >= std::size_t(s * bodies); ++s) {
+    const auto fx = r.nodal("interaction_force_x", s), fy = r.nodal("interaction_force_y", s);
+    std::vector<std::array<double, 2>> sum(std::size_t(bodies), {0.0, 0.0});
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n) {
+      sum[std::size_t(nodeBody[std::size_t(n)])][0] += fx[std::size_t(n)];
+      sum[std::size_t(nodeBody[std::size_t(n)])][1] += fy[std::size_t(n)];
+    }
+    double scale = 0.0;
+    for (int b = 0; b < bodies; ++b)
+      for (int i = 0; i < 2; ++i) scale = std::max(scale, std::abs(rows[std::size_t((s - 1) * bodies + b)][i]));
+    EXPECT_GT(scale, 0.0);
+    for (int b = 0; b < bodies; ++b)
+      for (int i = 0; i < 2; ++i) {
+        const double expected = rows[std::size_t((s - 1) * bodies + b)][std::size_t(i)];
+        EXPECT_NEAR(sum[std::size_t(b)][std::size_t(i)], expected, 1e-10 * scale) << "step " << s << " body " << b;
+        worst = std::max(worst, std::abs(sum[std::size_t(b)][std::size_t(i)] - expected) / scale);
+      }
+  }
+  return worst;
 }
 
 TEST(Results, UniaxialCompressionFieldsAreTheHomogeneousSolution) {
@@ -132,9 +177,11 @@ TEST(Results, InteractionTractionPressesWhereTheBodiesTouch) {
   EXPECT_EQ(r.blocks()[1].name, "half-space");
   ASSERT_EQ(r.sideSets().size(), 2u);
   EXPECT_EQ(r.sideSets()[0].name, "contact:sphere");
-  EXPECT_EQ(r.nodalNames(),
-            (std::vector<std::string>{"displacement_x", "displacement_y", "traction_x", "traction_y", "pressure"}));
+  EXPECT_EQ(r.nodalNames(), (std::vector<std::string>{"displacement_x", "displacement_y", "traction_x", "traction_y",
+                                                      "pressure", "interaction_force_x", "interaction_force_y"}));
   const auto mesh = app::buildProblem(*d).model.mesh;
+  const double sums = expectBodySumsAreTheBodyForces(r, *mesh, dir);
+  std::printf("[results, Method 3] interaction_force summed per body against body_forces.csv: %.1e\n", sums);
   const int last = r.numSteps();
   const auto p = r.nodal("pressure", last), ty = r.nodal("traction_y", last);
   const LocalIndex apex = mesh->nodeSet("apex").front(), lowerApex = mesh->nodeSet("lower apex").front();
@@ -146,6 +193,58 @@ TEST(Results, InteractionTractionPressesWhereTheBodiesTouch) {
   // the displacement of the driven equator is -u (the sphere's equator plane moves down by u)
   const auto uy = r.nodal("displacement_y", last);
   for (LocalIndex n : mesh->nodeSet("equator")) EXPECT_NEAR(uy[std::size_t(n)], -run.curve.back().u, 1e-14);
+}
+
+// Method 1 writes the same interaction fields: the nodal interaction force (a body force: interior nodes
+// carry some; summed per body, body_forces.csv) and, from its surface nodes' share, the traction and
+// pressure, finite, 0 off the surfaces, and adhesive (< 0) at the apices of the sphere near the half-space.
+TEST(Results, MethodOneWritesTheInteractionTractionAndForce) {
+  const std::string dir = std::string(CGCM_TEST_OUTPUT) + "/results-method1";
+  auto d = io::readDeck(CGCM_DECK);
+  io::applyOverrides(*d, *app::validParameters(),
+                     {"Interaction/Method=volume pair", "Loading/Approach Path={-0.02, -0.016}",
+                      "Output/Print Steps=false", "Output/Directory=" + dir});
+  io::validateDeck(*d, *app::validParameters());
+  std::ostringstream log;
+  const auto run = app::runSimulation(Tpetra::getDefaultComm(), *d, log);
+  ASSERT_TRUE(run.completed) << run.failure;
+  if (Tpetra::getDefaultComm()->getRank() != 0) return;
+  ASSERT_LT(run.curve.back().P, 0.0);  // apart, attracting
+
+  const io::ExodusReader r(dir + "/results.e");
+  EXPECT_EQ(r.nodalNames(), (std::vector<std::string>{"displacement_x", "displacement_y", "traction_x", "traction_y",
+                                                      "pressure", "interaction_force_x", "interaction_force_y"}));
+  const auto mesh = app::buildProblem(*d).model.mesh;
+  std::vector<char> onSurface(std::size_t(mesh->numNodes()), 0);
+  for (const auto& surface : mesh->surfaces)
+    for (LocalIndex n : surface.facets) onSurface[std::size_t(n)] = 1;
+  const int last = r.numSteps();
+  const auto p = r.nodal("pressure", last), tx = r.nodal("traction_x", last), ty = r.nodal("traction_y", last);
+  const auto fy = r.nodal("interaction_force_y", last);
+  int interiorLoaded = 0;
+  double fmax = 0.0;
+  for (double f : fy) fmax = std::max(fmax, std::abs(f));
+  ASSERT_GT(fmax, 0.0);
+  for (LocalIndex n = 0; n < mesh->numNodes(); ++n) {
+    const auto k = std::size_t(n);
+    ASSERT_TRUE(std::isfinite(p[k]) && std::isfinite(tx[k]) && std::isfinite(ty[k]) && std::isfinite(fy[k]))
+        << "node " << n;
+    if (onSurface[k]) continue;
+    EXPECT_EQ(p[k], 0.0) << "node " << n;
+    EXPECT_EQ(tx[k], 0.0) << "node " << n;
+    EXPECT_EQ(ty[k], 0.0) << "node " << n;
+    interiorLoaded += std::abs(fy[k]) > 1e-6 * fmax;
+  }
+  EXPECT_GT(interiorLoaded, 0);  // a body force
+  const LocalIndex apex = mesh->nodeSet("apex").front(), lowerApex = mesh->nodeSet("lower apex").front();
+  EXPECT_LT(p[std::size_t(apex)], 0.0);  // adhesive
+  EXPECT_LT(p[std::size_t(lowerApex)], 0.0);
+  EXPECT_LT(ty[std::size_t(apex)], 0.0);       // the sphere is pulled down
+  EXPECT_GT(ty[std::size_t(lowerApex)], 0.0);  // the half-space up
+  const double sums = expectBodySumsAreTheBodyForces(r, *mesh, dir);
+  std::printf("[results, Method 1] pressure at the apices %.4e, %.4e; %d interior nodes loaded; interaction_force "
+              "summed per body against body_forces.csv: %.1e\n",
+              p[std::size_t(apex)], p[std::size_t(lowerApex)], interiorLoaded, sums);
 }
 
 // The fields are written by mesh node whatever global ids the nodes carry: a homogeneous stretch of a

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cgcm/assembly/Problem.hpp"
+#include "cgcm/assembly/SurfaceTraction.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/mesh/Generators.hpp"
@@ -306,7 +307,6 @@ TEST(VolumeInteractionPart, CoupledTangentAndBalancedForces) {
                       1.5);
   EXPECT_NEAR(full.searchRadius(), 1.0 + 1.5 * 0.2, 1e-15);  // cutoff + factor x skin
   ASSERT_NE(full.volumeInteraction(), nullptr);
-  EXPECT_EQ(full.interaction(), nullptr);  // no Method 3
   const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, 17);
   Vector uv(dofs->ownedMap());
   fromStd(u, uv);
@@ -347,9 +347,209 @@ TEST(Problem, IsTheSumOfItsParts) {
   ASSERT_GT(fmax, 1e-3 * scale);  // an interaction that matters next to the bulk
   EXPECT_LE(worst, 1e-13 * scale);
   // a problem without interaction has none of its parts
-  EXPECT_EQ(bulk.interaction(), nullptr);
+  EXPECT_FALSE(bulk.hasInteraction());
+  EXPECT_EQ(bulk.volumeInteraction(), nullptr);
   EXPECT_TRUE(bulk.interactionForces().empty());
   EXPECT_EQ(bulk.searchRadius(), 0.0);
+  Vector uv(dofs->ownedMap());
+  fromStd(u, uv);
+  EXPECT_EQ(bulk.interactionNodeForces(uv)->normInf(), 0.0);  // zero, on the owned map
+}
+
+// A dof's index by its mesh node: node * 3 + i (every rank holding the whole mesh).
+std::size_t meshIndex(const DofMap& dofs, GlobalIndex dof) {
+  return std::size_t(dofs.meshNodeOfDof(dof)) * 3 + std::size_t(dof % 3);
+}
+
+// A vector on the owned map gathered by mesh node on every rank.
+std::vector<Real> gatherByMeshNode(const DofMap& dofs, const Vector& v) {
+  const Map& owned = *dofs.ownedMap();
+  std::vector<Real> local(owned.getGlobalNumElements(), 0.0), all(local.size(), 0.0);
+  auto h = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t lid = 0; lid < owned.getNodeNumElements(); ++lid)
+    local[meshIndex(dofs, owned.getGlobalElement(LocalIndex(lid)))] = h(lid, 0);
+  Teuchos::reduceAll(*dofs.comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(), all.data());
+  return all;
+}
+
+Vector ownedByMeshNode(const DofMap& dofs, const std::vector<Real>& u) {
+  Vector v(dofs.ownedMap());
+  const Map& owned = *dofs.ownedMap();
+  auto h = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t lid = 0; lid < owned.getNodeNumElements(); ++lid)
+    h(lid, 0) = u[meshIndex(dofs, owned.getGlobalElement(LocalIndex(lid)))];
+  return v;
+}
+
+// Per body, the sum of the node forces over its nodes, against interactionForces() (relative to the
+// largest component); returns the largest relative difference.
+Real expectBodySumsAreTheInteractionForces(const mesh::Mesh& m, const std::vector<Real>& nodeForces,
+                                           const std::vector<std::array<Real, 3>>& forces) {
+  std::vector<int> nodeBody(std::size_t(m.numNodes()), -1);
+  for (const auto& b : m.blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[std::size_t(n)] = b.body;
+  std::vector<std::array<Real, 3>> sum(forces.size(), {0.0, 0.0, 0.0});
+  for (std::size_t k = 0; k < nodeForces.size(); ++k) sum[std::size_t(nodeBody[k / 3])][k % 3] += nodeForces[k];
+  Real scale = 0.0, worst = 0.0;
+  for (const auto& f : forces)
+    for (Real c : f) scale = std::max(scale, std::abs(c));
+  EXPECT_GT(scale, 0.0);
+  for (std::size_t b = 0; b < forces.size(); ++b)
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(sum[b][std::size_t(i)], forces[b][std::size_t(i)], 1e-10 * scale) << "body " << b << " component " << i;
+      worst = std::max(worst, std::abs(sum[b][std::size_t(i)] - forces[b][std::size_t(i)]) / scale);
+    }
+  return worst;
+}
+
+// Method 3: the node forces of the part's residual are those of its pairs, evaluated one by one at the
+// state of the last evaluation (what results.e wrote before; 1e-12), summed per body the forces on the
+// bodies (1e-10), and the forces on the bodies are left as the evaluation gave them. 1 and 2 ranks.
+TEST(InteractionPart, NodeForcesAreThoseOfThePairs) {
+  auto m = twoBoxes(0.3);
+  auto dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
+  Problem p(dofs, m, Formulation::ThreeD, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
+  const auto si = methodThree(*m);
+  p.setInteraction(si, 1.5);
+  const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, 29);
+  Vector uv = ownedByMeshNode(*dofs, u), f(dofs->ownedMap());
+  p.updateInteractionGraph(uv);
+  p.evaluate(uv, f, nullptr);
+  const auto evaluated = p.interactionForces();
+  // the pairs of this rank's facets from the last evaluation, one by one, summed over the ranks
+  const std::vector<Real>& x = p.currentCoordinates(uv);
+  std::vector<Real> local(3 * std::size_t(m->numNodes()), 0.0), pairs(local.size(), 0.0);
+  interaction::PairContribution c;
+  for (const auto& pair : si->pairs()) {
+    si->evaluatePair(x.data(), pair, c, false);
+    for (int a = 0; a < c.numRowNodes; ++a)
+      for (int i = 0; i < 3; ++i) local[3 * std::size_t(c.rowNodes[a]) + std::size_t(i)] -= c.f[3 * a + i];
+  }
+  Teuchos::reduceAll(*dofs->comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(), pairs.data());
+  const std::vector<Real> nodeForces = gatherByMeshNode(*dofs, *p.interactionNodeForces(uv));
+  Real scale = 0.0, worst = 0.0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    scale = std::max(scale, std::abs(pairs[k]));
+    worst = std::max(worst, std::abs(nodeForces[k] - pairs[k]));
+  }
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LE(worst, 1e-12 * scale);
+  const auto after = p.interactionForces();
+  ASSERT_EQ(after.size(), 2u);
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(after[b][i], evaluated[b][i]);
+  const Real sums = expectBodySumsAreTheInteractionForces(*m, nodeForces, after);
+  std::printf("[node forces, Method 3] against the pairs: max|df|/max|f| = %.1e; body sums against the forces "
+              "on the bodies: %.1e; %d rank(s)\n",
+              worst / scale, sums, dofs->comm()->getSize());
+}
+
+// Method 1: the node forces are a body force (interior nodes within reach carry some), minus the part's
+// share of the residual, and summed per body the forces on the bodies (1e-10). 1 and 2 ranks.
+TEST(VolumeInteractionPart, NodeForcesAreABodyForceSummingToTheForcesOnTheBodies) {
+  auto m = twoBoxes(0.3);
+  auto dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
+  const auto mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
+  Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
+  interaction::VolumeInteractionOptions o;
+  o.formulation = Formulation::ThreeD;
+  o.quadratureOrder = 1;
+  o.maxQuadratureOrder = 2;
+  o.cutoff = 1.0;
+  o.skin = 0.2;
+  full.setInteraction(std::make_shared<interaction::VolumeInteraction>(
+                          *m, std::vector<Real>{1.0, 1.0}, interaction::makePotential("lennard-jones", 10.0, 0.25), o),
+                      1.5);
+  const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, 31);
+  Vector uv = ownedByMeshNode(*dofs, u), fb(dofs->ownedMap()), ff(dofs->ownedMap());
+  full.updateInteractionGraph(uv);
+  bulk.evaluate(uv, fb, nullptr);
+  full.evaluate(uv, ff, nullptr);
+  const std::vector<Real> nodeForces = gatherByMeshNode(*dofs, *full.interactionNodeForces(uv));
+  const std::vector<Real> share = [&] {
+    const auto b = gatherByMeshNode(*dofs, fb), f = gatherByMeshNode(*dofs, ff);
+    std::vector<Real> d(f.size());
+    for (std::size_t k = 0; k < d.size(); ++k) d[k] = f[k] - b[k];
+    return d;
+  }();
+  Real scale = 0.0, worst = 0.0;
+  for (std::size_t k = 0; k < share.size(); ++k) {
+    scale = std::max(scale, std::abs(nodeForces[k]));
+    worst = std::max(worst, std::abs(nodeForces[k] + share[k]));
+  }
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LE(worst, 1e-10 * scale);  // the difference of two residuals: the bulk's round-off
+  // on the interior nodes too: the centre node of each 2 x 2 x 2 box, 0.5 from its surface
+  std::vector<char> onSurface(std::size_t(m->numNodes()), 0);
+  for (const auto& s : m->surfaces)
+    for (LocalIndex n : s.facets) onSurface[std::size_t(n)] = 1;
+  int interiorLoaded = 0;
+  for (LocalIndex n = 0; n < m->numNodes(); ++n)
+    if (!onSurface[std::size_t(n)] && std::abs(nodeForces[3 * std::size_t(n) + 2]) > 1e-6 * scale) ++interiorLoaded;
+  EXPECT_EQ(interiorLoaded, 2);
+  const Real sums = expectBodySumsAreTheInteractionForces(*m, nodeForces, full.interactionForces());
+  std::printf("[node forces, Method 1] against minus the part's share of f: max|df|/max|f| = %.1e; body sums "
+              "against the forces on the bodies: %.1e; %d interior nodes loaded; %d rank(s)\n",
+              worst / scale, sums, interiorLoaded, dofs->comm()->getSize());
+}
+
+// The lumped surface areas of a whole boundary add up to its area (ring areas in axisymmetry), a uniform
+// traction t given as t times each node's area reads back as t on every surface node, with the pressure
+// -t . n on a face, and nothing off the surfaces.
+TEST(SurfaceTraction, LumpedAreasAndAUniformTraction) {
+  struct Case {
+    const char* name;
+    mesh::Mesh mesh;
+    Formulation formulation;
+    Real area;          // of the whole boundary
+    LocalIndex face;    // a node inside the top face (normal +y in 2D, +z in 3D)
+  };
+  mesh::RectangleSpec r;
+  r.x0 = 1.0, r.lx = 1.0, r.ly = 2.0, r.nx = 2, r.ny = 4;  // node (i, j): j * 3 + i
+  mesh::BoxSpec b;
+  b.lx = 1.0, b.ly = 2.0, b.lz = 3.0, b.nx = 2, b.ny = 2, b.nz = 3;  // node (i, j, k): (k * 3 + j) * 3 + i
+  mesh::BoxSpec t = b;
+  t.tetrahedra = true;
+  const LocalIndex top3 = (3 * 3 + 1) * 3 + 1;
+  const Case cases[] = {
+      {"plane strain", mesh::rectangle(r), Formulation::PlaneStrain, 6.0, 4 * 3 + 1},
+      // inner and outer cylinders, two annuli
+      {"axisymmetric", mesh::rectangle(r), Formulation::Axisymmetric, 2.0 * kPi * (1.0 * 2 + 2.0 * 2) + 2.0 * kPi * 3.0,
+       4 * 3 + 1},
+      {"3D hexahedra", mesh::box(b), Formulation::ThreeD, 2.0 * (1 * 2 + 2 * 3 + 1 * 3), top3},
+      {"3D tetrahedra", mesh::box(t), Formulation::ThreeD, 2.0 * (1 * 2 + 2 * 3 + 1 * 3), top3}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const mesh::Mesh& m = c.mesh;
+    const int d = m.dim;
+    const std::vector<Real> zero(m.coords.size(), 0.0);
+    const auto areas = surfaceTractions(m, c.formulation, zero, zero).area;
+    Real total = 0.0;
+    for (Real a : areas) total += a;
+    EXPECT_NEAR(total, c.area, 1e-12 * c.area);
+    const Real traction[3] = {0.3, -0.7, 0.2};
+    std::vector<Real> force(m.coords.size());
+    for (std::size_t k = 0; k < force.size(); ++k) force[k] = traction[k % std::size_t(d)] * areas[k / std::size_t(d)];
+    const auto s = surfaceTractions(m, c.formulation, zero, force);
+    std::vector<char> onSurface(std::size_t(m.numNodes()), 0);
+    for (const auto& surface : m.surfaces)
+      for (LocalIndex n : surface.facets) onSurface[std::size_t(n)] = 1;
+    int interior = 0;
+    for (LocalIndex n = 0; n < m.numNodes(); ++n) {
+      if (!onSurface[std::size_t(n)]) {
+        ++interior;
+        EXPECT_EQ(areas[std::size_t(n)], 0.0);
+        EXPECT_EQ(s.pressure[std::size_t(n)], 0.0);
+        for (int i = 0; i < d; ++i) EXPECT_EQ(s.traction[d * std::size_t(n) + std::size_t(i)], 0.0);
+        continue;
+      }
+      for (int i = 0; i < d; ++i) EXPECT_NEAR(s.traction[d * std::size_t(n) + std::size_t(i)], traction[i], 1e-14);
+    }
+    EXPECT_GT(interior, 0);
+    ASSERT_TRUE(onSurface[std::size_t(c.face)]);
+    ASSERT_EQ(m.coord(c.face, d - 1), d == 2 ? 2.0 : 3.0);  // on the top face
+    EXPECT_NEAR(s.pressure[std::size_t(c.face)], -traction[d - 1], 1e-14);
+  }
 }
 
 // What one evaluation of the two boxes with Method 3 gives, gathered over the ranks: the residual, the

@@ -5,10 +5,14 @@
 // averaged over its quadrature points (stress_rr, stress_zz, stress_tt,
 // stress_rz in axisymmetry; stress_xx, stress_yy, stress_zz, stress_xy in
 // plane strain; the six components in 3D), J and von_mises; with an
-// interaction the nodal interaction traction (traction_x/_y: the interaction
-// force on a surface node over its current tributary area, ring area in
-// axisymmetry) and its normal part, pressure (> 0 pushing into the body,
-// < 0 adhesive), 0 off the interacting surfaces; the load-curve columns as
+// interaction, whichever method, the nodal interaction traction
+// (traction_x/_y(/_z): the interaction force on a surface node over its
+// current tributary area, ring area in axisymmetry) and its normal part,
+// pressure (> 0 pushing into the body, < 0 adhesive), 0 off the surfaces, and
+// the interaction force on every node, interaction_force_x/_y(/_z)
+// (Problem::interactionNodeForces: Method 1's is a body force, on the
+// interior nodes too, whose share the traction leaves out; summed over a
+// body it is the body's row of body_forces.csv); the load-curve columns as
 // global variables. The state is gathered to rank 0, which evaluates the
 // fields on the whole mesh (the set-up's, which a rank may assemble only a
 // part of) and writes the file.
@@ -43,10 +47,10 @@ class ResultsWriter {
  private:
   void displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
                              io::ExodusWriter::Fields& element) const;
-  /// On rank 0: the interaction force on every node (dim entries per node) at
-  /// the state x of the last evaluation, summed over the ranks' pairs. Collective.
-  std::vector<Real> interactionNodeForces(const assembly::Vector& x) const;
-  void traction(const std::vector<Real>& u, const std::vector<Real>& force, io::ExodusWriter::Fields& nodal) const;
+  /// traction_*, pressure and interaction_force_* of the interaction force
+  /// on each node `force` at u (both in mesh_'s node order).
+  void interactionFields(const std::vector<Real>& u, const std::vector<Real>& force,
+                         io::ExodusWriter::Fields& nodal) const;
 
   /// A state by global node id (id * dim + i) in the order of mesh_'s nodes.
   std::vector<Real> inMeshOrder(const std::vector<Real>& byGlobalNode) const;

@@ -4,7 +4,9 @@
 // surfaces: SurfaceInteractionPart; Method 1 over element pairs:
 // VolumeInteractionPart). A part writes the forces of the pairs this rank
 // owns into the overlap rows, lists the node couplings the matrix graph
-// needs, and sums the interaction force on each body.
+// needs, and sums the interaction force on each body. Its output services
+// (the interaction force on each node) are the same for every method: they
+// are computed from what assemble writes.
 #include <array>
 #include <string>
 #include <utility>
@@ -51,6 +53,24 @@ class InteractionPart {
   /// Current coordinates (X + u), as a mesh-wide array (dim entries per
   /// node), of every node the interaction reads; other nodes hold X. Collective.
   virtual const std::vector<Real>& currentCoordinates(const Vector& u) = 0;
+
+  /// The interaction force on each node at u, into `forces` (on the owned
+  /// map): minus the part's own share of the residual, f_C, assembled alone
+  /// into a zero vector and exported to the rows' owners. Exact by
+  /// construction and the same for every method: Method 3's forces sit on
+  /// the surface nodes, Method 1's (a body force) on every node of the cells
+  /// within reach of another body. Summed over a body's nodes it is that
+  /// body's entry of forces() (at this u). Returns the reason this rank's
+  /// assemble failed, or empty (the caller stops every rank together).
+  /// Collective.
+  std::string nodeForces(const Vector& u, Vector& forces);
+
+ protected:
+  explicit InteractionPart(Teuchos::RCP<const DofMap> dofs) : dofs_(std::move(dofs)) {}
+  Teuchos::RCP<const DofMap> dofs_;
+
+ private:
+  Teuchos::RCP<const Export> exporter_;  ///< overlap -> owned, made on the first nodeForces
 };
 
 /// Current coordinates of a set of nodes on every rank: the displacements

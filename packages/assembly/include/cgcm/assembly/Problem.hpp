@@ -76,12 +76,7 @@ class Problem {
   /// updateInteractionGraph.
   void setInteraction(std::shared_ptr<interaction::Interaction> interaction, Real searchRadiusFactor);
   bool hasInteraction() const { return bool(interactionPart_); }
-  /// Method 3's interaction, or null (no interaction, or Method 1).
-  const interaction::SurfaceInteraction* interaction() const {
-    const auto* part = dynamic_cast<const SurfaceInteractionPart*>(interactionPart_.get());
-    return part ? &part->interaction() : nullptr;
-  }
-  /// Method 1's interaction, or null.
+  /// Method 1's interaction, or null (for its pair statistics in the run's summary).
   const interaction::VolumeInteraction* volumeInteraction() const {
     const auto* part = dynamic_cast<const VolumeInteractionPart*>(interactionPart_.get());
     return part ? &part->interaction() : nullptr;
@@ -109,6 +104,15 @@ class Problem {
   /// Per body: the interaction force on it at the state of the last
   /// evaluation (x, y, z), summed over ranks. Collective; empty without interaction.
   std::vector<std::array<Real, 3>> interactionForces() const;
+  /// The interaction force on each node at the state u, on the owned map
+  /// (zero without interaction): the interaction part evaluated alone, its
+  /// residual share exported to the owners, with the sign of a force on the
+  /// body (InteractionPart::nodeForces; whichever method). Summed over a
+  /// body's nodes it is that body's interactionForces(), which are then those
+  /// at u (unchanged if u is the state of the last evaluation). Timed as
+  /// `interaction` (and `search`). Collective; throws NumericalError on
+  /// every rank if a rank's pairs cannot be evaluated (as evaluate).
+  Teuchos::RCP<Vector> interactionNodeForces(const Vector& u);
 
   const AssemblyTimings& timings() const { return timings_; }
 

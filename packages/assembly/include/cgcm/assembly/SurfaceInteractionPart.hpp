@@ -54,7 +54,6 @@ class SurfaceInteractionPart final : public InteractionPart {
   std::vector<std::array<Real, 3>> forces() const override;
 
  private:
-  Teuchos::RCP<const DofMap> dofs_;
   const mesh::Mesh* mesh_;
   int dim_;
   std::shared_ptr<interaction::SurfaceInteraction> interaction_;

@@ -43,7 +43,6 @@ class VolumeInteractionPart final : public InteractionPart {
   std::vector<std::array<Real, 3>> forces() const override;
 
  private:
-  Teuchos::RCP<const DofMap> dofs_;
   std::shared_ptr<interaction::VolumeInteraction> interaction_;
   Real searchRadiusFactor_;
   ReplicatedCoordinates coords_;

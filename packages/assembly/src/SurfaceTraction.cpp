@@ -1,0 +1,70 @@
+#include "cgcm/assembly/SurfaceTraction.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cgcm::assembly {
+
+SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulation, const std::vector<Real>& u,
+                                  const std::vector<Real>& force) {
+  const int d = mesh.dim;
+  const LocalIndex nn = mesh.numNodes();
+  if (u.size() != mesh.coords.size() || force.size() != mesh.coords.size())
+    throw std::logic_error("surfaceTractions: displacement and force need dim entries per node of the mesh");
+  std::vector<Real> x(mesh.coords);
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] += u[k];
+  SurfaceTractions out;
+  auto& area = out.area;
+  area.assign(std::size_t(nn), 0.0);
+  std::vector<Real> normal(d * std::size_t(nn), 0.0);  // sum of the node's facets' area vectors
+  const bool axisymmetric = formulation == Formulation::Axisymmetric;
+  for (const mesh::Surface& s : mesh.surfaces) {
+    const int npf = s.nodesPerFacet;
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      const LocalIndex* n = &s.facets[std::size_t(f) * npf];
+      if (d == 2) {
+        const Real tx = x[2 * n[1]] - x[2 * n[0]], ty = x[2 * n[1] + 1] - x[2 * n[0] + 1];
+        const Real length = std::hypot(tx, ty);
+        // share of each node: integral of N_a (times 2 pi r in axisymmetry)
+        const Real a0 = axisymmetric ? 2.0 * kPi * length * (2.0 * x[2 * n[0]] + x[2 * n[1]]) / 6.0 : 0.5 * length;
+        const Real a1 = axisymmetric ? 2.0 * kPi * length * (x[2 * n[0]] + 2.0 * x[2 * n[1]]) / 6.0 : 0.5 * length;
+        area[n[0]] += a0, area[n[1]] += a1;
+        for (int a = 0; a < 2; ++a) normal[2 * n[a]] += ty, normal[2 * n[a] + 1] -= tx;  // outward, length-weighted
+        continue;
+      }
+      // 3D: the facet's area vector (sum of its corner triangles' for a quad), shared equally by its nodes
+      Real m[3] = {0.0, 0.0, 0.0};
+      for (int a = 1; a + 1 < npf; ++a) {
+        const Real* x0 = &x[3 * std::size_t(n[0])];
+        const Real* x1 = &x[3 * std::size_t(n[a])];
+        const Real* x2 = &x[3 * std::size_t(n[a + 1])];
+        const Real e1[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
+        const Real e2[3] = {x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
+        m[0] += 0.5 * (e1[1] * e2[2] - e1[2] * e2[1]);
+        m[1] += 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]);
+        m[2] += 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
+      }
+      const Real A = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+      for (int a = 0; a < npf; ++a) {
+        area[n[a]] += A / npf;
+        for (int i = 0; i < 3; ++i) normal[3 * std::size_t(n[a]) + i] += m[i];
+      }
+    }
+  }
+  out.traction.assign(d * std::size_t(nn), 0.0);
+  out.pressure.assign(std::size_t(nn), 0.0);
+  for (LocalIndex n = 0; n < nn; ++n) {
+    if (!(area[n] > 0.0)) continue;
+    Real tn = 0.0, len2 = 0.0;
+    for (int i = 0; i < d; ++i) {
+      const Real t = force[d * std::size_t(n) + i] / area[n], m = normal[d * std::size_t(n) + i];
+      out.traction[d * std::size_t(n) + i] = t;
+      tn += t * m;
+      len2 += m * m;
+    }
+    if (len2 > 0.0) out.pressure[n] = -tn / std::sqrt(len2);
+  }
+  return out;
+}
+
+}  // namespace cgcm::assembly
