@@ -9,6 +9,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/core/ParameterValidators.hpp"
 #include "cgcm/material/MaterialParameters.hpp"
+#include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/NewtonSolver.hpp"
 #include "cgcm/solver/PathFollower.hpp"
@@ -39,8 +40,8 @@ RCP<const ParameterList> validParameters() {
                  "per-body materials: a sublist named after a body of the mesh (the <name> of its \"body:<name>\" "
                  "group, or a built-in geometry's \"sphere\", \"half-space\", \"second sphere\", \"block\") "
                  "with any of Young's Modulus, Poisson's Ratio, Volumetric Energy, Kinematics; the rest comes from Material. "
-                 "The interaction scales (gammaL, gammaW, the force unit) use Material's Young's modulus")
-      .disableRecursiveValidation();
+                 "The interaction scales (gammaL, gammaW, the force unit) use Material's Young's modulus") =
+      *material::validBodiesParameters();
 
   valid->sublist("Interaction", false,
                  "Lennard-Jones interaction between the bodies (sphere geometries), doc/theory.md#method-3, "
@@ -52,11 +53,7 @@ RCP<const ParameterList> validParameters() {
   valid->sublist("LOCA", false, solver::PathPlan::locaHelp()).disableRecursiveValidation();
 
   auto& solverList = valid->sublist("Solver", false, "nonlinear and linear solvers");
-  solverList.set("Partition", "geometric",
-                 "how cells are split over MPI ranks: \"geometric\" (Zoltan2 multi-jagged cuts of the cell "
-                 "centroids: compact subdomains, short interfaces) or \"contiguous\" (ranges of the mesh's cell "
-                 "numbering); no effect on one rank",
-                 choices({"geometric", "contiguous"}));
+  solverList.setParameters(*assembly::validParameters());
   solverList.sublist("Newton", false, "Newton's method (NOX) at each load step and in every continuation corrector")
       .setParameters(*solver::NewtonSettings::validParameters());
   solverList.sublist("Linear Solver", false, "linear solves inside Newton (Stratimikos)")
@@ -79,56 +76,6 @@ RCP<const ParameterList> validParameters() {
              "`cgcm --restart <Directory>` can continue a run that was killed");
   return valid;
 }
-
-namespace {
-
-// The names of a mesh's bodies (index = body id): of their "body:<name>" groups.
-std::vector<std::string> bodyNames(const mesh::Mesh& m) {
-  std::vector<std::string> names(std::size_t(m.numBodies));
-  for (const auto& b : m.blocks)
-    if (names[std::size_t(b.body)].empty()) names[std::size_t(b.body)] = b.name;
-  return names;
-}
-
-// Bodies/<name> sublists: a material per named body, checked like Material; a
-// mirror image (Geometry/Mirror Planes) is made of its original unless it has
-// an entry of its own.
-void applyBodyMaterials(const ParameterList& deck, ProblemSetup& s) {
-  if (!deck.isSublist("Bodies")) return;
-  const ParameterList& bodies = deck.sublist("Bodies");
-  const std::vector<std::string> names = bodyNames(*s.model.mesh);
-  std::string known;
-  for (const auto& n : names) known += (known.empty() ? "\"" : ", \"") + n + "\"";
-  std::vector<material::NeoHookean> materials(names.size(), s.material);
-  std::vector<char> hasEntry(names.size(), 0);
-  for (auto it = bodies.begin(); it != bodies.end(); ++it) {
-    const std::string name = bodies.name(it);
-    if (!bodies.isSublist(name))
-      throw InputError("Bodies/" + name + ": a sublist named after a body is expected; the bodies are " + known);
-    const auto found = std::find(names.begin(), names.end(), name);
-    if (found == names.end())
-      throw InputError("Bodies/" + name + ": the mesh has no body of that name; its bodies are " + known);
-    const std::size_t b = std::size_t(found - names.begin());
-    materials[b] = material::fromParameters(deck.sublist("Material"), bodies.sublist(name), "Bodies/" + name + "/");
-    hasEntry[b] = 1;
-    std::ostringstream o;
-    o << "body \"" << name << "\": Young's modulus " << materials[b].youngsModulus() << ", Poisson's ratio "
-      << materials[b].poissonRatio();
-    s.report.push_back(o.str());
-  }
-  for (std::size_t b = 0; b < names.size(); ++b) {
-    if (hasEntry[b]) continue;
-    std::string base = names[b];
-    while (base.size() > 14 && base.compare(base.size() - 14, 13, " mirrored in ") == 0) base.resize(base.size() - 14);
-    const auto original = std::find(names.begin(), names.end(), base);
-    if (original == names.end() || !hasEntry[std::size_t(original - names.begin())]) continue;
-    materials[b] = materials[std::size_t(original - names.begin())];
-    s.report.push_back("body \"" + names[b] + "\": the material of \"" + base + "\" (its mirror image)");
-  }
-  s.bodyMaterials = std::move(materials);
-}
-
-}  // namespace
 
 void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath) {
   if (!deck.isSublist("Geometry") || !deck.sublist("Geometry").isType<std::string>("File")) return;
@@ -201,7 +148,9 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   if (type == "gmsh")
     checkSize(estimateSize(m.numNodes(), m.numCells(), s.formulation), memory,
               "Geometry/File \"" + geometry.get<std::string>("File") + "\"");
-  applyBodyMaterials(deck, s);
+  std::vector<std::string> names = mesh::bodyNames(m), originals;
+  for (const auto& name : names) originals.push_back(mesh::unmirroredName(name));
+  s.bodyMaterials = material::bodyMaterials(deck.sublist("Material"), deck.sublist("Bodies"), names, originals, s.report);
   if (s.interaction) s.interaction->checkMesh(m, s.formulation);
   s.numNodes = std::size_t(m.numNodes());
   s.numCells = std::size_t(m.numCells());

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/core/ParameterValidators.hpp"
 
 namespace cgcm::assembly {
 
@@ -19,6 +20,19 @@ CellPartition parseCellPartition(const std::string& name) {
   if (name == "geometric") return CellPartition::Geometric;
   if (name == "contiguous") return CellPartition::Contiguous;
   throw InputError("Solver/Partition = \"" + name + "\": allowed values are \"geometric\" and \"contiguous\"");
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> validParameters() {
+  static const Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto list = Teuchos::rcp(new Teuchos::ParameterList("Solver"));
+    list->set("Partition", "geometric",
+              "how cells are split over MPI ranks: \"geometric\" (Zoltan2 multi-jagged cuts of the cell "
+              "centroids: compact subdomains, short interfaces) or \"contiguous\" (ranges of the mesh's cell "
+              "numbering); no effect on one rank",
+              validators::choices({"geometric", "contiguous"}));
+    return Teuchos::RCP<const Teuchos::ParameterList>(list);
+  }();
+  return valid;
 }
 
 namespace {

@@ -1,5 +1,9 @@
 #include "cgcm/material/MaterialParameters.hpp"
 
+#include <algorithm>
+#include <sstream>
+
+#include "cgcm/core/Error.hpp"
 #include "cgcm/core/ParameterValidators.hpp"
 #include "cgcm/io/Deck.hpp"
 
@@ -41,6 +45,47 @@ NeoHookean fromParameters(const ParameterList& material, const ParameterList& ov
   for (auto it = overrides.begin(); it != overrides.end(); ++it)
     own.setEntry(overrides.name(it), checked.getEntry(overrides.name(it)));
   return fromParameters(own);
+}
+
+Teuchos::RCP<const ParameterList> validBodiesParameters() {
+  static const Teuchos::RCP<const ParameterList> valid = [] {
+    auto list = Teuchos::rcp(new ParameterList("Bodies"));
+    list->disableRecursiveValidation();  // the body names are the mesh's: bodyMaterials checks them
+    return Teuchos::RCP<const ParameterList>(list);
+  }();
+  return valid;
+}
+
+std::vector<NeoHookean> bodyMaterials(const ParameterList& material, const ParameterList& bodies,
+                                      const std::vector<std::string>& names, const std::vector<std::string>& originals,
+                                      std::vector<std::string>& report) {
+  std::string known;
+  for (const auto& n : names) known += (known.empty() ? "\"" : ", \"") + n + "\"";
+  std::vector<NeoHookean> materials(names.size(), fromParameters(material));
+  std::vector<char> hasEntry(names.size(), 0);
+  for (auto it = bodies.begin(); it != bodies.end(); ++it) {
+    const std::string name = bodies.name(it);
+    if (!bodies.isSublist(name))
+      throw InputError("Bodies/" + name + ": a sublist named after a body is expected; the bodies are " + known);
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end())
+      throw InputError("Bodies/" + name + ": the mesh has no body of that name; its bodies are " + known);
+    const std::size_t b = std::size_t(found - names.begin());
+    materials[b] = fromParameters(material, bodies.sublist(name), "Bodies/" + name + "/");
+    hasEntry[b] = 1;
+    std::ostringstream o;
+    o << "body \"" << name << "\": Young's modulus " << materials[b].youngsModulus() << ", Poisson's ratio "
+      << materials[b].poissonRatio();
+    report.push_back(o.str());
+  }
+  for (std::size_t b = 0; b < names.size(); ++b) {
+    if (hasEntry[b] || originals.at(b) == names[b]) continue;
+    const auto original = std::find(names.begin(), names.end(), originals[b]);
+    if (original == names.end() || !hasEntry[std::size_t(original - names.begin())]) continue;
+    materials[b] = materials[std::size_t(original - names.begin())];
+    report.push_back("body \"" + names[b] + "\": the material of \"" + originals[b] + "\" (its mirror image)");
+  }
+  return materials;
 }
 
 }  // namespace cgcm::material

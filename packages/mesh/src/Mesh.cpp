@@ -16,6 +16,13 @@ const std::vector<std::vector<int>>& localFacets(CellType type) {
   return all[static_cast<std::size_t>(type)];
 }
 
+std::vector<std::string> bodyNames(const Mesh& mesh) {
+  std::vector<std::string> names(std::size_t(mesh.numBodies));
+  for (const auto& b : mesh.blocks)
+    if (names[std::size_t(b.body)].empty()) names[std::size_t(b.body)] = b.name;
+  return names;
+}
+
 LocalIndex Mesh::numCells() const {
   LocalIndex n = 0;
   for (const auto& b : blocks) n += b.numCells();

@@ -128,4 +128,11 @@ void mirror(Mesh& mesh, int axis, Real tolerance) {
   mesh.numBodies = bodies;
 }
 
+std::string unmirroredName(std::string name) {
+  const std::string ending = " mirrored in ";  // + the plane's letter, as mirror() names an image body
+  while (name.size() > ending.size() + 1 && name.compare(name.size() - ending.size() - 1, ending.size(), ending) == 0)
+    name.resize(name.size() - ending.size() - 1);
+  return name;
+}
+
 }  // namespace cgcm::mesh

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/io/Deck.hpp"
@@ -75,6 +76,40 @@ TEST(MaterialParameters, ABodysBadOverrideIsNamedWithItsPath) {
   choice.set("Kinematics", std::string("large strain"));
   const std::string notAChoice = refusal(choice);
   EXPECT_NE(notAChoice.find("Bodies/tip/Kinematics = \"large strain\": not a choice"), std::string::npos) << notAChoice;
+}
+
+TEST(MaterialParameters, BodiesGetTheirOwnAndMirrorImagesTheirOriginals) {
+  const Teuchos::ParameterList material = validated(Teuchos::ParameterList());
+  Teuchos::ParameterList bodies;
+  bodies.sublist("tip").set("Young's Modulus", 5.0);
+  const std::vector<std::string> names = {"substrate", "tip", "tip mirrored in x", "substrate mirrored in x"};
+  const std::vector<std::string> originals = {"substrate", "tip", "tip", "substrate"};
+  std::vector<std::string> report;
+  const auto m = bodyMaterials(material, bodies, names, originals, report);
+  ASSERT_EQ(m.size(), 4u);
+  expectLaw(m[0], 1.0, 0.2, VolumetricLaw::LogSquared, Kinematics::FiniteStrain);
+  expectLaw(m[1], 5.0, 0.2, VolumetricLaw::LogSquared, Kinematics::FiniteStrain);
+  expectLaw(m[2], 5.0, 0.2, VolumetricLaw::LogSquared, Kinematics::FiniteStrain);  // the image of "tip"
+  expectLaw(m[3], 1.0, 0.2, VolumetricLaw::LogSquared, Kinematics::FiniteStrain);
+  ASSERT_EQ(report.size(), 2u);
+  EXPECT_EQ(report[0], "body \"tip\": Young's modulus 5, Poisson's ratio 0.2");
+  EXPECT_EQ(report[1], "body \"tip mirrored in x\": the material of \"tip\" (its mirror image)");
+
+  auto refusalOf = [&](const Teuchos::ParameterList& b) {
+    try {
+      bodyMaterials(material, b, names, originals, report);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  Teuchos::ParameterList unknown;
+  unknown.sublist("probe").set("Young's Modulus", 2.0);
+  EXPECT_EQ(refusalOf(unknown), "Bodies/probe: the mesh has no body of that name; its bodies are \"substrate\", "
+                                "\"tip\", \"tip mirrored in x\", \"substrate mirrored in x\"");
+  Teuchos::ParameterList notAList;
+  notAList.set("tip", 2.0);
+  EXPECT_NE(refusalOf(notAList).find("Bodies/tip: a sublist named after a body is expected"), std::string::npos);
 }
 
 }  // namespace

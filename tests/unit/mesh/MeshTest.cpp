@@ -307,6 +307,12 @@ TEST(Mirror, BodiesOffThePlaneGetAnImageBody) {
   EXPECT_NEAR(surfaceFlux(m, 1), 3.0, 1e-12);
   EXPECT_EQ(m.surfaces[1].numFacets(), m.surfaces[0].numFacets());
   EXPECT_TRUE(findBodyOverlap(m).empty());
+  EXPECT_EQ(bodyNames(m), (std::vector<std::string>{"block", "block mirrored in x"}));
+  // an image's original, through any number of planes; other names stay
+  EXPECT_EQ(unmirroredName("block mirrored in x"), "block");
+  EXPECT_EQ(unmirroredName("block mirrored in x mirrored in y"), "block");
+  EXPECT_EQ(unmirroredName("mirrored in x"), "mirrored in x");
+  EXPECT_EQ(unmirroredName("tip"), "tip");
 }
 
 TEST(Mirror, RejectsNodesOnTheNegativeSide) {

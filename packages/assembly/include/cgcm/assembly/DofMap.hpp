@@ -11,6 +11,8 @@
 // rank) and by their global id (mesh::Mesh::globalNode, the label shared by
 // the ranks). Degree of freedom (node n, component i) has global index
 // globalNode(n) * dofsPerNode + i.
+#include <Teuchos_ParameterList.hpp>
+
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -27,6 +29,8 @@ namespace cgcm::assembly {
 enum class CellPartition { Geometric, Contiguous, Subdomain };
 /// "geometric" or "contiguous"; throws InputError otherwise.
 CellPartition parseCellPartition(const std::string& name);
+/// What the assembly owns of the deck's Solver sublist: Partition (parseCellPartition reads it).
+Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 /// The rank of every mesh-wide cell of `mesh` (held whole by every rank), the
 /// same list on every rank: Geometric or Contiguous. Collective.
 std::vector<int> partitionCells(const Comm& comm, const mesh::Mesh& mesh, CellPartition partition);

@@ -24,4 +24,17 @@ NeoHookean fromParameters(const Teuchos::ParameterList& material);
 NeoHookean fromParameters(const Teuchos::ParameterList& material, const Teuchos::ParameterList& overrides,
                           const std::string& path);
 
+/// The Bodies sublist: a sublist per body, named after it, with any of Material's parameters.
+Teuchos::RCP<const Teuchos::ParameterList> validBodiesParameters();
+
+/// Per body (index = body id; `names` the bodies' names): the validated `material` with the
+/// entries of bodies/<name> replacing its own (each checked as fromParameters does); a body
+/// without an entry whose `original` (a mirror image's: the body it was made of; else itself)
+/// has one takes the original's. Appends a line per body with a material of its own to
+/// `report`. Throws InputError naming Bodies/<name> for a name no body has or an entry that is
+/// not a sublist.
+std::vector<NeoHookean> bodyMaterials(const Teuchos::ParameterList& material, const Teuchos::ParameterList& bodies,
+                                      const std::vector<std::string>& names, const std::vector<std::string>& originals,
+                                      std::vector<std::string>& report);
+
 }  // namespace cgcm::material

@@ -75,4 +75,7 @@ struct Mesh {
   const std::vector<LocalIndex>& nodeSet(const std::string& name) const;
 };
 
+/// The names of a mesh's bodies (index = body id): of each body's first element block.
+std::vector<std::string> bodyNames(const Mesh& mesh);
+
 }  // namespace cgcm::mesh

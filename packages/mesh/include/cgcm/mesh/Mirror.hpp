@@ -3,6 +3,8 @@
 // by its reflection. The result is exactly symmetric (node for node), which
 // an unstructured mesher cannot promise for the two halves of a symmetric
 // geometry.
+#include <string>
+
 #include "cgcm/mesh/Mesh.hpp"
 
 namespace cgcm::mesh {
@@ -20,5 +22,9 @@ namespace cgcm::mesh {
 /// the image facets, less the facets that lie in the plane. Throws
 /// InputError for a node on the negative side.
 void mirror(Mesh& mesh, int axis, Real tolerance = 1e-9);
+
+/// The body a mirror image body was made of: `name` less its " mirrored in <x|y|z>" endings
+/// (`name` itself for a body that is no image).
+std::string unmirroredName(std::string name);
 
 }  // namespace cgcm::mesh
