@@ -290,21 +290,30 @@ TEST(InteractionPart, CoupledTangentAndForcesOnTheBodies) {
   EXPECT_LT(err, 1e-6);
 }
 
+// Two boxes 0.3 apart (the same mesh for both problems): `bulk` without interaction, `full` with
+// Method 1 (orders 1 .. 2, cutoff 1, skin 0.2, search radius factor 1.5).
+struct TwoBoxesMethod1 {
+  std::shared_ptr<mesh::Mesh> m = twoBoxes(0.3);
+  Teuchos::RCP<DofMap> dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
+  material::NeoHookean mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
+  Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
+  TwoBoxesMethod1() {
+    interaction::VolumeInteractionOptions o;
+    o.formulation = Formulation::ThreeD;
+    o.quadratureOrder = 1;
+    o.maxQuadratureOrder = 2;
+    o.cutoff = 1.0;
+    o.skin = 0.2;
+    full.setInteraction(std::make_shared<interaction::VolumeInteraction>(
+                            *m, std::vector<Real>{1.0, 1.0}, interaction::makePotential("lennard-jones", 10.0, 0.25), o),
+                        1.5);
+  }
+};
+
 TEST(VolumeInteractionPart, CoupledTangentAndBalancedForces) {
   if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "one rank";
-  auto m = twoBoxes(0.3);
-  auto dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
-  const auto mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
-  Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
-  interaction::VolumeInteractionOptions o;
-  o.formulation = Formulation::ThreeD;
-  o.quadratureOrder = 1;
-  o.maxQuadratureOrder = 2;
-  o.cutoff = 1.0;
-  o.skin = 0.2;
-  full.setInteraction(std::make_shared<interaction::VolumeInteraction>(
-                          *m, std::vector<Real>{1.0, 1.0}, interaction::makePotential("lennard-jones", 10.0, 0.25), o),
-                      1.5);
+  TwoBoxesMethod1 t;
+  auto& [m, dofs, mat, bulk, full] = t;
   EXPECT_NEAR(full.searchRadius(), 1.0 + 1.5 * 0.2, 1e-15);  // cutoff + factor x skin
   ASSERT_NE(full.volumeInteraction(), nullptr);
   const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, 17);
@@ -447,19 +456,8 @@ TEST(InteractionPart, NodeForcesAreThoseOfThePairs) {
 // Method 1: the node forces are a body force (interior nodes within reach carry some), minus the part's
 // share of the residual, and summed per body the forces on the bodies (1e-10). 1 and 2 ranks.
 TEST(VolumeInteractionPart, NodeForcesAreABodyForceSummingToTheForcesOnTheBodies) {
-  auto m = twoBoxes(0.3);
-  auto dofs = Teuchos::rcp(new DofMap(Tpetra::getDefaultComm(), *m, 3));
-  const auto mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
-  Problem bulk{dofs, m, Formulation::ThreeD, mat}, full{dofs, m, Formulation::ThreeD, mat};
-  interaction::VolumeInteractionOptions o;
-  o.formulation = Formulation::ThreeD;
-  o.quadratureOrder = 1;
-  o.maxQuadratureOrder = 2;
-  o.cutoff = 1.0;
-  o.skin = 0.2;
-  full.setInteraction(std::make_shared<interaction::VolumeInteraction>(
-                          *m, std::vector<Real>{1.0, 1.0}, interaction::makePotential("lennard-jones", 10.0, 0.25), o),
-                      1.5);
+  TwoBoxesMethod1 t;
+  auto& [m, dofs, mat, bulk, full] = t;
   const auto u = randomDisplacement(3 * std::size_t(m->numNodes()), 0.02, 31);
   Vector uv = ownedByMeshNode(*dofs, u), fb(dofs->ownedMap()), ff(dofs->ownedMap());
   full.updateInteractionGraph(uv);

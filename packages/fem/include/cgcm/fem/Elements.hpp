@@ -276,77 +276,44 @@ KOKKOS_INLINE_FUNCTION void quadraticHexNode(int a, Real (&xi)[3]) {
 }
 }  // namespace detail
 
+namespace detail {
+/// A quadratic tensor-product cell with 3-point Gauss per direction: its nodes from `node`
+/// (quadraticQuadNode, quadraticHexNode), each node's shape function serendipity or Lagrange.
+template <class E, int NumNodes, int Dim, bool Serendipity>
+struct QuadraticTensorCell : ThreePointGauss<E> {
+  static constexpr int numNodes = NumNodes;
+  static constexpr int numQp = Dim == 2 ? 9 : 27;
+  static constexpr int quadratureDegree = 5;
+  static constexpr int dim = Dim;
+
+  KOKKOS_INLINE_FUNCTION static void parentCoordinates(int a, Real (&xi)[dim]) {
+    if constexpr (Dim == 2)
+      quadraticQuadNode(a, xi);
+    else
+      quadraticHexNode(a, xi);
+  }
+
+  KOKKOS_INLINE_FUNCTION static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]) {
+    for (int a = 0; a < numNodes; ++a) {
+      Real p[dim];
+      parentCoordinates(a, p);
+      if constexpr (Serendipity)
+        serendipityShape(p, xi, N[a], dN[a]);
+      else
+        lagrangeShape(p, xi, N[a], dN[a]);
+    }
+  }
+};
+}  // namespace detail
+
 /// Serendipity quadratic quadrilateral, 3×3 Gauss quadrature.
-struct Quad8 : detail::ThreePointGauss<Quad8> {
-  static constexpr int numNodes = 8;
-  static constexpr int numQp = 9;
-  static constexpr int quadratureDegree = 5;
-  static constexpr int dim = 2;
-
-  KOKKOS_INLINE_FUNCTION static void parentCoordinates(int a, Real (&xi)[dim]) { detail::quadraticQuadNode(a, xi); }
-
-  KOKKOS_INLINE_FUNCTION static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]) {
-    for (int a = 0; a < numNodes; ++a) {
-      Real p[dim];
-      parentCoordinates(a, p);
-      detail::serendipityShape(p, xi, N[a], dN[a]);
-    }
-  }
-};
-
+struct Quad8 : detail::QuadraticTensorCell<Quad8, 8, 2, true> {};
 /// Biquadratic (Lagrange) quadrilateral, 3×3 Gauss quadrature.
-struct Quad9 : detail::ThreePointGauss<Quad9> {
-  static constexpr int numNodes = 9;
-  static constexpr int numQp = 9;
-  static constexpr int quadratureDegree = 5;
-  static constexpr int dim = 2;
-
-  KOKKOS_INLINE_FUNCTION static void parentCoordinates(int a, Real (&xi)[dim]) { detail::quadraticQuadNode(a, xi); }
-
-  KOKKOS_INLINE_FUNCTION static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]) {
-    for (int a = 0; a < numNodes; ++a) {
-      Real p[dim];
-      parentCoordinates(a, p);
-      detail::lagrangeShape(p, xi, N[a], dN[a]);
-    }
-  }
-};
-
+struct Quad9 : detail::QuadraticTensorCell<Quad9, 9, 2, false> {};
 /// Serendipity quadratic hexahedron, 3×3×3 Gauss quadrature.
-struct Hex20 : detail::ThreePointGauss<Hex20> {
-  static constexpr int numNodes = 20;
-  static constexpr int numQp = 27;
-  static constexpr int quadratureDegree = 5;
-  static constexpr int dim = 3;
-
-  KOKKOS_INLINE_FUNCTION static void parentCoordinates(int a, Real (&xi)[dim]) { detail::quadraticHexNode(a, xi); }
-
-  KOKKOS_INLINE_FUNCTION static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]) {
-    for (int a = 0; a < numNodes; ++a) {
-      Real p[dim];
-      parentCoordinates(a, p);
-      detail::serendipityShape(p, xi, N[a], dN[a]);
-    }
-  }
-};
-
+struct Hex20 : detail::QuadraticTensorCell<Hex20, 20, 3, true> {};
 /// Triquadratic (Lagrange) hexahedron, 3×3×3 Gauss quadrature.
-struct Hex27 : detail::ThreePointGauss<Hex27> {
-  static constexpr int numNodes = 27;
-  static constexpr int numQp = 27;
-  static constexpr int quadratureDegree = 5;
-  static constexpr int dim = 3;
-
-  KOKKOS_INLINE_FUNCTION static void parentCoordinates(int a, Real (&xi)[dim]) { detail::quadraticHexNode(a, xi); }
-
-  KOKKOS_INLINE_FUNCTION static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]) {
-    for (int a = 0; a < numNodes; ++a) {
-      Real p[dim];
-      parentCoordinates(a, p);
-      detail::lagrangeShape(p, xi, N[a], dN[a]);
-    }
-  }
-};
+struct Hex27 : detail::QuadraticTensorCell<Hex27, 27, 3, false> {};
 
 /// Quadratic tetrahedron, four-point quadrature of degree 2.
 struct Tet10 : detail::ShapeAtQuadraturePoints<Tet10> {
