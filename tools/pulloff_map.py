@@ -130,6 +130,8 @@ def minimum_force(csv_path):
         return p[k], u[k], False
     (u0, u1, u2), (p0, p1, p2) = u[k - 1:k + 2], p[k - 1:k + 2]
     denom = (u0 - u1) * (u0 - u2) * (u1 - u2)
+    if denom == 0.0:  # a jump lands at the u of its fold: two states at one u, no parabola
+        return p1, u1, True
     a = (u2 * (p1 - p0) + u1 * (p0 - p2) + u0 * (p2 - p1)) / denom
     b = (u2 * u2 * (p0 - p1) + u1 * u1 * (p2 - p0) + u0 * u0 * (p1 - p2)) / denom
     if a <= 0.0 or not min(u0, u2) <= -b / (2 * a) <= max(u0, u2):  # a kink (a snapping ring): keep the state

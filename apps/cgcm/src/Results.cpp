@@ -129,9 +129,10 @@ void ResultsWriter::displacementAndStress(const std::vector<Real>& u, io::Exodus
       Mat3 s;
       Real J = 0.0;
       bool ok = false;
-      fem::withSolidKernel(disc_.problem->formulation(), b.type, [&](auto kernel) {
-        ok = cellStress<decltype(kernel)>(mesh, nodes, u, material, s, J);
-      });
+      if (!fem::withSolidKernel(disc_.problem->formulation(), b.type, [&](auto kernel) {
+            ok = cellStress<decltype(kernel)>(mesh, nodes, u, material, s, J);
+          }))
+        throw std::logic_error("ResultsWriter: no kernel for block \"" + b.name + "\" (the assembly has one)");
       const Real nan = std::numeric_limits<Real>::quiet_NaN();  // an inverted cell: no stress
       for (std::size_t k = 0; k < components.size(); ++k) out[k]->push_back(ok ? s.a[components[k].i][components[k].j] : nan);
       out[components.size()]->push_back(ok ? J : nan);

@@ -148,9 +148,12 @@ ProblemSetup buildProblem(const ParameterList& deck) {
   if (type == "gmsh")
     checkSize(estimateSize(m.numNodes(), m.numCells(), s.formulation), memory,
               "Geometry/File \"" + geometry.get<std::string>("File") + "\"");
-  std::vector<std::string> names = mesh::bodyNames(m), originals;
-  for (const auto& name : names) originals.push_back(mesh::unmirroredName(name));
-  s.bodyMaterials = material::bodyMaterials(deck.sublist("Material"), deck.sublist("Bodies"), names, originals, s.report);
+  if (deck.isSublist("Bodies")) {  // always, in a validated deck
+    std::vector<std::string> names = mesh::bodyNames(m), originals;
+    for (const auto& name : names) originals.push_back(mesh::unmirroredName(name));
+    s.bodyMaterials =
+        material::bodyMaterials(deck.sublist("Material"), deck.sublist("Bodies"), names, originals, s.report);
+  }
   if (s.interaction) s.interaction->checkMesh(m, s.formulation);
   s.numNodes = std::size_t(m.numNodes());
   s.numCells = std::size_t(m.numCells());

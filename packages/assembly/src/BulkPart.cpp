@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "cgcm/core/Error.hpp"
@@ -143,9 +144,10 @@ BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const Vector
   CellFailures out;
   for (const auto& b : blocks_) {
     BlockFailures bf;
-    fem::withSolidKernel(formulation_, b.type, [&](auto kernel) {
+    const bool assembled = fem::withSolidKernel(formulation_, b.type, [&](auto kernel) {
       bf = assembleBlock<decltype(kernel)>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
     });
+    if (!assembled) throw std::logic_error("BulkPart: no kernel for block \"" + b.name + "\" (checked at construction)");
     if (bf.count > 0 && out.first.empty()) {
       const LocalIndex c = bf.first;
       std::ostringstream where;

@@ -229,6 +229,13 @@ std::vector<std::array<Real, 3>> Problem::interactionForces() const {
 Teuchos::RCP<Vector> Problem::interactionNodeForces(const Vector& u) {
   auto forces = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   if (!interactionPart_) return forces;
+  // Evaluating again at the last evaluated state leaves the interaction's search state (hints, pair
+  // lists) as it was; at another state it would move them, and the path would depend on the output.
+  Vector state(dofs_->overlapMap());
+  state.doImport(u, *dofs_->ownedToOverlap(), Tpetra::INSERT);
+  state.update(-1.0, *uOverlap_, 1.0);
+  if (state.normInf() != 0.0)
+    throw std::logic_error("Problem::interactionNodeForces: u is not the state of the last evaluation");
   const auto t0 = Clock::now();
   const std::string failure = interactionPart_->nodeForces(u, *forces);
   timings_.interaction += secondsSince(t0);  // an evaluation of the interaction, as the others

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace cgcm::assembly {
 
@@ -20,6 +21,9 @@ SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulatio
   const bool axisymmetric = formulation == Formulation::Axisymmetric;
   for (const mesh::Surface& s : mesh.surfaces) {
     const int npf = s.nodesPerFacet;
+    if (s.numFacets() > 0 && (d == 2 ? npf != 2 : npf != 3 && npf != 4))
+      throw std::logic_error("surfaceTractions: facets of " + std::to_string(npf) + " nodes in " + std::to_string(d) +
+                             "D; the lumped areas are those of straight segments, triangles and quadrilaterals");
     for (LocalIndex f = 0; f < s.numFacets(); ++f) {
       const LocalIndex* n = &s.facets[std::size_t(f) * npf];
       if (d == 2) {

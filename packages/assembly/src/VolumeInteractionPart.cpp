@@ -64,7 +64,7 @@ InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const 
   const auto rowIds = rowIds_;
   const bool withTangent = J != nullptr;
   auto scatter = [=](const interaction::VolumeContribution& c, long) {
-    LocalIndex rows[3 * kMaxCellNodes], cols[6 * kMaxCellNodes];
+    LocalIndex rows[3 * interaction::kMaxVolumeCellNodes], cols[6 * interaction::kMaxVolumeCellNodes];
     const int nr = dim * c.numRowNodes, nc = dim * c.numColNodes;
     bool finite = true;
     for (int r = 0; r < nr; ++r) finite = finite && std::isfinite(c.f[r]);

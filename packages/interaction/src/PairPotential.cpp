@@ -207,17 +207,16 @@ const std::vector<PotentialEntry>& potentialRegistry() {
        [](Real eps, Real r0, const Teuchos::ParameterList&) -> std::shared_ptr<const PairPotential> {
          return std::make_shared<RepulsiveLennardJones>(eps, r0);
        }},
-      {"Morse", "exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = Interaction/Morse/Width / r0",
+      {"Morse", "exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = Interaction/Morse/Inverse Width / r0",
        [](Teuchos::ParameterList& own) {
-         own.set("Width", 6.0,
-                 "a r0 of the Morse potential (> 0): 6 matches Lennard-Jones's well depth, position and curvature; "
-                 "larger is a shorter range",
+         own.set("Inverse Width", 6.0,
+                 "a r0 of the Morse potential (>= 0.001): 6 matches Lennard-Jones's well depth, position and "
+                 "curvature; larger is a narrower well of shorter range",
                  validators::atLeast(1e-3));
        },
        [](Real eps, Real r0, const Teuchos::ParameterList& own) -> std::shared_ptr<const PairPotential> {
-         const MorsePair law = MorsePair::matchedToLennardJones(eps, r0);
-         return std::make_shared<PlainPairPotential<MorsePair>>(
-             "morse", eps, r0, MorsePair{law.eps, law.r0, law.a * own.get<double>("Width") / 6.0});
+         return std::make_shared<PlainPairPotential<MorsePair>>("morse", eps, r0,
+                                                                MorsePair{eps, r0, own.get<double>("Inverse Width") / r0});
        }},
   };
   return entries;

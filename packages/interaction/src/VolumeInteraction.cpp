@@ -21,7 +21,8 @@ std::string where() { return "volume pair interaction: "; }
 // in 2D and 3D, simplices in 3D (split into four hexahedra; see tetSubHexPoint).
 bool volumeQuadratureTakes(CellType type, int dim) {
   const CellTypeInfo& row = cellTypeInfo(type);
-  return row.dim == dim && (!row.simplex || dim == 3) && fem::withElement(type, [](auto) {});
+  return row.dim == dim && (!row.simplex || dim == 3) && row.numNodes <= kMaxVolumeCellNodes &&
+         fem::withElement(type, [](auto) {});
 }
 
 std::string cellTypesTaken(int dim) {
@@ -60,7 +61,7 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
 
   // cells as plain arrays for the kernel
   const LocalIndex numCells = mesh.numCells();
-  Kokkos::View<LocalIndex* [kMaxCellNodes]> cellNodes("cgcm::volume_cell_nodes", numCells);
+  Kokkos::View<LocalIndex* [kMaxVolumeCellNodes]> cellNodes("cgcm::volume_cell_nodes", numCells);
   Kokkos::View<int*> cellType("cgcm::volume_cell_type", numCells), cellBody("cgcm::volume_cell_body", numCells);
   cellsOfBody_.assign(numBodies_, {});
   std::vector<char> used(numNodes_, 0);
@@ -71,7 +72,7 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
                        " cells; the method takes " + cellTypesTaken(dim_) + " in " + std::to_string(dim_) + "D");
     const int nn = mesh::nodesPerCell(block.type);
     for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
-      for (int a = 0; a < kMaxCellNodes; ++a) cellNodes(cell, a) = a < nn ? block.connectivity[std::size_t(c) * nn + a] : -1;
+      for (int a = 0; a < kMaxVolumeCellNodes; ++a) cellNodes(cell, a) = a < nn ? block.connectivity[std::size_t(c) * nn + a] : -1;
       for (int a = 0; a < nn; ++a) used[cellNodes(cell, a)] = 1;
       cellType(cell) = int(block.type);
       cellBody(cell) = block.body;
@@ -123,7 +124,7 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
         bb[i] = std::numeric_limits<Real>::max();
         bb[3 + i] = -std::numeric_limits<Real>::max();
       }
-      for (int a = 0; a < kMaxCellNodes && view_.cellNodes(c, a) >= 0; ++a)
+      for (int a = 0; a < kMaxVolumeCellNodes && view_.cellNodes(c, a) >= 0; ++a)
         for (int i = 0; i < dim_; ++i) {
           const Real v = coords[std::size_t(dim_) * view_.cellNodes(c, a) + i];
           bb[i] = std::min(bb[i], v);
@@ -227,8 +228,8 @@ Real VolumeInteraction::energy(const Real* coords) {
 std::vector<std::pair<LocalIndex, LocalIndex>> VolumeInteraction::couplings(const Real* coords, Real radius) const {
   std::vector<std::pair<LocalIndex, LocalIndex>> out;
   for (const Candidate& c : candidates(coords, radius))
-    for (int a = 0; a < kMaxCellNodes && view_.cellNodes(c.rowCell, a) >= 0; ++a)
-      for (int b = 0; b < kMaxCellNodes && view_.cellNodes(c.colCell, b) >= 0; ++b)
+    for (int a = 0; a < kMaxVolumeCellNodes && view_.cellNodes(c.rowCell, a) >= 0; ++a)
+      for (int b = 0; b < kMaxVolumeCellNodes && view_.cellNodes(c.colCell, b) >= 0; ++b)
         out.emplace_back(view_.cellNodes(c.rowCell, a), view_.cellNodes(c.colCell, b));
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

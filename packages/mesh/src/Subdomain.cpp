@@ -17,13 +17,13 @@ Mesh subdomain(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
                            std::to_string(whole.numCells()) + " cells");
   const LocalIndex numNodes = whole.numNodes();
   std::vector<char> kept(std::size_t(numNodes), 0);
-  std::vector<LocalIndex> cellInPart(cellOwner.size(), -1);
-  LocalIndex cell = 0, partCells = 0;
+  std::vector<LocalIndex> cellInSubdomain(cellOwner.size(), -1);
+  LocalIndex cell = 0, subdomainCells = 0;
   for (const auto& block : whole.blocks) {
     const int npc = nodesPerCell(block.type);
     for (LocalIndex c = 0; c < block.numCells(); ++c, ++cell) {
       if (cellOwner[std::size_t(cell)] != rank) continue;
-      cellInPart[std::size_t(cell)] = partCells++;
+      cellInSubdomain[std::size_t(cell)] = subdomainCells++;
       for (int a = 0; a < npc; ++a) kept[std::size_t(block.connectivity[std::size_t(c) * npc + a])] = 1;
     }
   }
@@ -72,7 +72,7 @@ Mesh subdomain(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
     t.body = s.body;
     t.nodesPerFacet = s.nodesPerFacet;
     for (LocalIndex n : s.facets) t.facets.push_back(index[std::size_t(n)]);
-    for (LocalIndex c : s.facetCells) t.facetCells.push_back(cellInPart[std::size_t(c)]);
+    for (LocalIndex c : s.facetCells) t.facetCells.push_back(cellInSubdomain[std::size_t(c)]);
     sub.surfaces.push_back(std::move(t));
   }
   return sub;

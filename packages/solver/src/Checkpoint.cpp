@@ -197,11 +197,13 @@ std::vector<Real> RootGather::gather(const assembly::Vector& x) {
 }
 
 void RootGather::scatter(const std::vector<Real>& values, assembly::Vector& x) {
+  // every rank reads the same checkpoint, so every rank refuses it here, before the collective export
+  const std::size_t unknowns = all_->getMap()->getGlobalNumElements();
+  if (values.size() != unknowns)
+    throw InputError("restart: the checkpoint holds " + std::to_string(values.size()) + " unknowns, the problem " +
+                     std::to_string(unknowns));
   {
     const auto v = all_->getLocalViewHost(Tpetra::Access::OverwriteAll);
-    if (v.extent(0) > 0 && values.size() != v.extent(0))
-      throw InputError("restart: the checkpoint holds " + std::to_string(values.size()) + " unknowns, the problem " +
-                       std::to_string(v.extent(0)));
     for (std::size_t k = 0; k < v.extent(0); ++k) v(k, 0) = values[k];
   }
   x.doExport(*all_, *import_, Tpetra::INSERT);

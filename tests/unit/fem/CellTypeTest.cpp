@@ -132,6 +132,52 @@ TEST(CellTypeTable, ReflectionKeepsTheOrientationAndTheCornersSeeIt) {
   }
 }
 
+TEST(CellTypeTable, EachFacetLiesOnOneFaceOfTheParentCell) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    const auto x = parentNodes(row.type);
+    for (int f = 0; f < row.numFacets; ++f) {
+      const int* n = row.facets[f];
+      auto all = [&](auto on) {
+        for (int a = 0; a < row.nodesPerFacet; ++a)
+          if (!on(x[n[a]])) return false;
+        return true;
+      };
+      bool onAFace = false;
+      for (int i = 0; i < row.dim; ++i)
+        for (Real v : row.simplex ? std::vector<Real>{0.0} : std::vector<Real>{-1.0, 1.0})
+          onAFace = onAFace || all([&](const Point& p) { return p[i] == v; });
+      if (row.simplex) onAFace = onAFace || all([&](const Point& p) { return p[0] + p[1] + p[2] == 1.0; });
+      EXPECT_TRUE(onAFace) << "facet " << f;
+    }
+  }
+}
+
+// The rows of the linear cells as the mesh code had them before the table (Exodus side order, the
+// mirror's and the gmsh reader's reflections): a change to them changes written side sets and meshes.
+TEST(CellTypeTable, TheLinearRowsAreTheExodusOnes) {
+  auto facets = [](CellType t) {
+    std::vector<std::vector<int>> out;
+    const CellTypeInfo& row = cellTypeInfo(t);
+    for (int f = 0; f < row.numFacets; ++f) out.emplace_back(row.facets[f], row.facets[f] + row.nodesPerFacet);
+    return out;
+  };
+  auto reflected = [](CellType t) {
+    const CellTypeInfo& row = cellTypeInfo(t);
+    return std::vector<int>(row.reflected, row.reflected + row.numNodes);
+  };
+  EXPECT_EQ(facets(CellType::Quad4), (std::vector<std::vector<int>>{{0, 1}, {1, 2}, {2, 3}, {3, 0}}));
+  EXPECT_EQ(facets(CellType::Hex8), (std::vector<std::vector<int>>{
+                                        {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}}));
+  EXPECT_EQ(facets(CellType::Tet4), (std::vector<std::vector<int>>{{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}}));
+  EXPECT_EQ(reflected(CellType::Quad4), (std::vector<int>{0, 3, 2, 1}));
+  EXPECT_EQ(reflected(CellType::Hex8), (std::vector<int>{0, 3, 2, 1, 4, 7, 6, 5}));
+  EXPECT_EQ(reflected(CellType::Tet4), (std::vector<int>{0, 2, 1, 3}));
+  EXPECT_EQ(std::string(cellTypeInfo(CellType::Quad4).name), "QUAD4");
+  EXPECT_EQ(std::string(cellTypeInfo(CellType::Hex8).name), "HEX8");
+  EXPECT_EQ(std::string(cellTypeInfo(CellType::Tet4).name), "TETRA4");
+}
+
 TEST(CellTypeTable, GmshOrderIsAPermutation) {
   for (const CellTypeInfo& row : kCellTypes) {
     SCOPED_TRACE(row.name);

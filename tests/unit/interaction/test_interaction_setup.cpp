@@ -93,12 +93,12 @@ TEST(InteractionSetup, BadCombinationsAreRefusedWithTheParameterNamed) {
 }
 
 TEST(InteractionSetup, APotentialDeclaresAndReadsItsOwnParameters) {
-  // Morse's Width (a r0) lives in Interaction/Morse: the default 6 is Lennard-Jones's curvature,
-  // another value changes phi as exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = Width / r0 says.
+  // Morse's Inverse Width (a r0) lives in Interaction/Morse: the default 6 is Lennard-Jones's curvature,
+  // another value changes phi as exp(-2a(r - r0)) - 2 exp(-a(r - r0)) with a = Inverse Width / r0 says.
   Teuchos::ParameterList morse;
   morse.set("Potential", std::string("Morse"));
   const InteractionSetup matched = setUp(morse);
-  morse.sublist("Morse").set("Width", 9.0);
+  morse.sublist("Morse").set("Inverse Width", 9.0);
   const InteractionSetup narrow = setUp(morse);
   const Real eps = matched.potential->epsilon(), r0 = matched.potential->r0();
   for (Real r : {0.9 * r0, r0, 1.3 * r0}) {
@@ -109,8 +109,8 @@ TEST(InteractionSetup, APotentialDeclaresAndReadsItsOwnParameters) {
   }
   // the parameter of a potential not chosen, and a parameter the potential does not declare, are refused
   Teuchos::ParameterList stray;
-  stray.sublist("Morse").set("Width", 9.0);
-  EXPECT_NE(refusal(stray).find("Interaction/Morse/Width is set, but Interaction/Potential = \"Lennard-Jones\""),
+  stray.sublist("Morse").set("Inverse Width", 9.0);
+  EXPECT_NE(refusal(stray).find("Interaction/Morse/Inverse Width is set, but Interaction/Potential = \"Lennard-Jones\""),
             std::string::npos)
       << refusal(stray);
   Teuchos::ParameterList unknown;
@@ -119,8 +119,8 @@ TEST(InteractionSetup, APotentialDeclaresAndReadsItsOwnParameters) {
   EXPECT_NE(refusal(unknown).find("Depth"), std::string::npos) << refusal(unknown);
   Teuchos::ParameterList bad;
   bad.set("Potential", std::string("Morse"));
-  bad.sublist("Morse").set("Width", -1.0);
-  EXPECT_NE(refusal(bad).find("Width"), std::string::npos) << refusal(bad);
+  bad.sublist("Morse").set("Inverse Width", -1.0);
+  EXPECT_NE(refusal(bad).find("Inverse Width"), std::string::npos) << refusal(bad);
   // makePotential, outside a deck, checks the same list
   Teuchos::ParameterList own;
   own.set("Depth", 2.0);

@@ -7,6 +7,7 @@
 #include "InteractionTestUtil.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/Normalisation.hpp"
+#include "cgcm/interaction/MorsePair.hpp"
 #include "cgcm/interaction/PairPotential.hpp"
 #include "cgcm/interaction/Quadrature.hpp"
 
@@ -118,6 +119,18 @@ TEST(KernelPotential, HalfSpaceLawIsTheIntegralOfThePotential) {
                   1e-7 * std::abs(p->dHalfSpace(h)))
           << e.deckName << " h " << h;
     }
+  }
+}
+
+TEST(KernelPotential, MorseWithTheDefaultInverseWidthIsTheLennardJonesMatchBitForBit) {
+  // a = 6 / r0 exactly as before the width became a parameter (runs must not move by an ulp)
+  for (Real r0 : {0.01, 0.0123456789, 0.3, 1.0, 7.77}) {
+    const auto morse = makePotential("Morse", 0.7, r0);
+    const MorsePair law = std::get<MorsePair>(morse->kernelPotential());
+    const MorsePair matched = MorsePair::matchedToLennardJones(0.7, r0);
+    EXPECT_EQ(law.a, matched.a) << "r0 " << r0;
+    EXPECT_EQ(law.eps, matched.eps);
+    EXPECT_EQ(law.r0, matched.r0);
   }
 }
 

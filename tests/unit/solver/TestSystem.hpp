@@ -30,14 +30,14 @@ inline Teuchos::RCP<const Teuchos::ParameterList> deckParameters() {
   valid->sublist("Interaction") = *interaction::validParameters();
   valid->sublist("Loading") = *solver::PathPlan::validParameters();
   auto& solverList = valid->sublist("Solver");
-  solverList.set("Partition", "geometric", "cells over ranks", validators::choices({"geometric", "contiguous"}));
+  solverList.setParameters(*assembly::validParameters());
   solverList.sublist("Newton").setParameters(*solver::NewtonSettings::validParameters());
   solverList.sublist("Linear Solver").setParameters(*solver::linearSolverValidParameters());
   return valid;
 }
 
 /// The set-up of a deck validated against deckParameters(), on this rank alone (it builds the whole mesh;
-/// solver::discretize gives each rank its part of rank 0's).
+/// solver::discretize gives each rank its subdomain of rank 0's).
 inline solver::ProblemSetup setupOf(const Teuchos::ParameterList& deck) {
   solver::ProblemSetup s;
   s.formulation = parseFormulation(deck.sublist("Problem").get<std::string>("Formulation"));

@@ -14,8 +14,8 @@
 // interior nodes too, whose share the traction leaves out; summed over a
 // body it is the body's row of body_forces.csv); the load-curve columns as
 // global variables. The state is gathered to rank 0, which evaluates the
-// fields on the whole mesh (the set-up's, which a rank may assemble only a
-// part of) and writes the file.
+// fields on the whole mesh (the set-up's, of which a rank may assemble only a
+// subdomain) and writes the file.
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,7 +28,7 @@ namespace cgcm::app {
 
 class ResultsWriter {
  public:
-  /// Creates `path` on rank 0 with `mesh` (the whole mesh that `disc` assembles all or a part of; read on
+  /// Creates `path` on rank 0 with `mesh` (the whole mesh that `disc` assembles, whole or a subdomain of it; read on
   /// rank 0 only, null elsewhere allowed) and the global
   /// variables `globals` (stresses with the problem's material of each
   /// body); keptSteps >= 0: continues the existing file after that many

@@ -108,8 +108,9 @@ class Problem {
   /// (zero without interaction): the interaction part evaluated alone, its
   /// residual share exported to the owners, with the sign of a force on the
   /// body (InteractionPart::nodeForces; whichever method). Summed over a
-  /// body's nodes it is that body's interactionForces(), which are then those
-  /// at u (unchanged if u is the state of the last evaluation). Timed as
+  /// body's nodes it is that body's interactionForces(). u must be the state
+  /// of the last evaluate() (std::logic_error otherwise: at another state the
+  /// interaction's search state would move with the output). Timed as
   /// `interaction` (and `search`). Collective; throws NumericalError on
   /// every rank if a rank's pairs cannot be evaluated (as evaluate).
   Teuchos::RCP<Vector> interactionNodeForces(const Vector& u);

@@ -83,10 +83,19 @@ constexpr bool cellTypeTableIsConsistent() {
     for (int a = 0; a < r.numNodes; ++a)
       if (r.fromGmsh[a] < 0 || r.fromGmsh[a] >= r.numNodes || r.reflected[a] < 0 || r.reflected[a] >= r.numNodes)
         return false;
+    for (int f = 0; f < r.numFacets; ++f)
+      for (int a = 0; a < r.nodesPerFacet; ++a)
+        if (r.facets[f][a] < 0 || r.facets[f][a] >= r.numNodes) return false;
+    for (int a = 0; a < r.nodesPerFacet; ++a)
+      if (r.reflectedFacet[a] < 0 || r.reflectedFacet[a] >= r.nodesPerFacet) return false;
+    for (int k = 0; k < r.numCorners; ++k)
+      for (int a = 0; a <= r.dim; ++a)
+        if (r.corners[k][a] < 0 || r.corners[k][a] >= r.numNodes) return false;
   }
   return true;
 }
 }  // namespace detail
-static_assert(detail::cellTypeTableIsConsistent(), "kCellTypes: a row out of order or beyond the kMax* bounds");
+static_assert(detail::cellTypeTableIsConsistent(),
+              "kCellTypes: a row out of order, beyond the kMax* bounds, or naming a node it does not have");
 
 }  // namespace cgcm

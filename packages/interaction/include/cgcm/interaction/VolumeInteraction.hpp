@@ -58,6 +58,9 @@ constexpr int kMaxVolumeOrder2D = 12;
 constexpr int kMaxVolumeOrder3D = 6;
 constexpr int kMaxTetOrder = 4;
 constexpr int kMaxCellPoints = 256;  ///< 6^3 (Hex8), 4 x 4^3 (Tet4)
+/// The most nodes of a cell the method takes: the pair buffers below are sized by it (a larger
+/// cell type is refused until they are made for it).
+constexpr int kMaxVolumeCellNodes = 8;
 
 struct VolumeInteractionOptions {
   Formulation formulation = Formulation::PlaneStrain;
@@ -91,11 +94,11 @@ struct VolumeContribution {
   int rowBody = 0;
   int numRowNodes = 0;
   int numColNodes = 0;
-  LocalIndex rowNodes[kMaxCellNodes];
-  LocalIndex colNodes[2 * kMaxCellNodes];
+  LocalIndex rowNodes[kMaxVolumeCellNodes];
+  LocalIndex colNodes[2 * kMaxVolumeCellNodes];
   Real energy = 0.0;  ///< half the pair's energy (the reverse direction adds the other half)
-  Real f[3 * kMaxCellNodes];
-  Real K[3 * kMaxCellNodes][6 * kMaxCellNodes];
+  Real f[3 * kMaxVolumeCellNodes];
+  Real K[3 * kMaxVolumeCellNodes][6 * kMaxVolumeCellNodes];
 };
 
 /// Counts of the last updatePairs / evaluate.
@@ -121,13 +124,13 @@ namespace detail {
 struct CellPoints {
   int count = 0;
   int numNodes = 0;
-  Real N[kMaxCellPoints][kMaxCellNodes];
+  Real N[kMaxCellPoints][kMaxVolumeCellNodes];
   Real x[kMaxCellPoints][3];
   Real W[kMaxCellPoints];  ///< beta0 w det J0 (x 2 pi R axisymmetric)
 };
 
 struct VolumeMeshView {
-  Kokkos::View<const LocalIndex* [kMaxCellNodes]> cellNodes;
+  Kokkos::View<const LocalIndex* [kMaxVolumeCellNodes]> cellNodes;
   Kokkos::View<const int*> cellType;  ///< CellType as int
   Kokkos::View<const int*> cellBody;
   Kokkos::View<const Real*> density;  ///< per body
@@ -236,9 +239,11 @@ KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cel
 template <int Dim>
 KOKKOS_INLINE_FUNCTION void cellPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
                                        bool axisymmetric, CellPoints& out) {
+  out.count = 0;  // a cell type without points (refused by the constructor) contributes nothing
   fem::withElement(CellType(m.cellType(cell)), [&](auto element) {
     using E = decltype(element);
-    if constexpr (E::dim == Dim) tensorPoints<Dim, E>(m, cell, order, x, Dim == 2 && axisymmetric, out);
+    if constexpr (E::dim == Dim && E::numNodes <= kMaxVolumeCellNodes)
+      tensorPoints<Dim, E>(m, cell, order, x, Dim == 2 && axisymmetric, out);
   });
 }
 
@@ -286,7 +291,7 @@ struct VolumePairFunctor {
     for (int i = 0; i < a.count; ++i) {
       // sums over the column cell's points, weighted by W2: psi, d psi/dx1,
       // d2 psi/dx1 dx1 and, per column node, N2 d2 psi/dx1 dx2
-      Real e = 0.0, g[3] = {}, H[3][3] = {}, C[kMaxCellNodes][3][3] = {};
+      Real e = 0.0, g[3] = {}, H[3][3] = {}, C[kMaxVolumeCellNodes][3][3] = {};
       for (int j = 0; j < b.count; ++j) {
         Real psi, gj[3], H11[3][3] = {}, H12[3][3] = {};
         pointPairLaw<F>(law, a.x[i], b.x[j], psi, gj, withTangent ? H11 : nullptr, H12);

@@ -2,7 +2,7 @@
 // checkpoint.bin: the last accepted state of a displacement-controlled run,
 // enough to go on exactly where it stood: the load stepper's state (segment,
 // u, next increment, step count, the secant predictor's previous state), the
-// continuity check's last load, the load-curve rows so far, the Exodus steps
+// continuity check's last u, the load-curve rows so far, the Exodus steps
 // written, and the displacement vectors (by global dof). Written by rank 0
 // after every accepted state, through a temporary file and a rename, so a run
 // killed at any moment leaves either the previous checkpoint or the new one,
@@ -51,7 +51,8 @@ class RootGather {
   explicit RootGather(const Teuchos::RCP<const assembly::Map>& owned);
   /// All values on rank 0, empty elsewhere. Collective.
   std::vector<Real> gather(const assembly::Vector& x);
-  /// x from `values` given on rank 0 (ignored elsewhere). Collective.
+  /// x from `values`, every dof in global order, given on every rank (rank 0's are used; a
+  /// wrong length throws InputError on every rank). Collective.
   void scatter(const std::vector<Real>& values, assembly::Vector& x);
   /// The gathered vector of the last gather (rank 0: every dof).
   const assembly::Vector& all() const { return *all_; }
