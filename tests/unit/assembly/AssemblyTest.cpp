@@ -442,7 +442,12 @@ TEST(InteractionPart, NodeForcesAreThoseOfThePairs) {
     worst = std::max(worst, std::abs(nodeForces[k] - pairs[k]));
   }
   ASSERT_GT(scale, 0.0);
-  EXPECT_LE(worst, 1e-12 * scale);
+  // one rank: the same sums in the same order, so bit for bit (results.e's fields unchanged); on several
+  // ranks the export adds the shared nodes' shares in another order than the reduction
+  if (dofs->comm()->getSize() == 1)
+    EXPECT_EQ(worst, 0.0);
+  else
+    EXPECT_LE(worst, 1e-12 * scale);
   const auto after = p.interactionForces();
   ASSERT_EQ(after.size(), 2u);
   for (int b = 0; b < 2; ++b)
