@@ -52,7 +52,7 @@ Real ContactProbe::contactRadius(const Vector& u) const {
   return profile.back().first;
 }
 
-Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe,
+Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,
                    const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
                    const solver::Checkpoint* resume)
     : setup_(setup), mesh_(*disc.mesh), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
@@ -69,9 +69,9 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
                   : std::make_unique<io::CsvWriter>(path, columns);
   };
   if (resume) curve = resume->curve;
-  runOnRoot(*disc.dofs->comm(), [&] { csv_ = open(dir + "/load_curve.csv", columns_); });
+  solver::runOnRoot(*disc.dofs->comm(), [&] { csv_ = open(dir + "/load_curve.csv", columns_); });
   if (disc.problem->hasInteraction())
-    runOnRoot(*disc.dofs->comm(), [&] {
+    solver::runOnRoot(*disc.dofs->comm(), [&] {
       bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
   if (exodus)
@@ -82,7 +82,7 @@ Recorder::Recorder(const ProblemSetup& setup, const Discretization& disc, const 
 void Recorder::record(const solver::PathState& state) {
   const Vector& x = *state.x;
   const std::vector<Real>& p = state.p;
-  LoadPoint row;
+  solver::LoadPoint row;
   row.step = state.step;
   row.newtonIterations = state.iterations;
   row.stable = state.stable;

@@ -56,7 +56,7 @@ bool cellStress(const mesh::Mesh& m, const LocalIndex* nodes, const std::vector<
 
 }  // namespace
 
-ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const Discretization& disc,
+ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const solver::Discretization& disc,
                              const std::vector<std::string>& globals, int keptSteps)
     : mesh_(mesh),
       disc_(disc),
@@ -74,7 +74,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, co
   for (const auto& c : stressComponents(disc.problem->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
-  runOnRoot(*disc.dofs->comm(), [&] {
+  solver::runOnRoot(*disc.dofs->comm(), [&] {
     if (!mesh_) throw std::logic_error("ResultsWriter: rank 0 needs the whole mesh");
     writer_ = keptSteps >= 0 ? std::make_unique<io::ExodusWriter>(path, *mesh_, vars, keptSteps)
                              : std::make_unique<io::ExodusWriter>(path, "cgcm", *mesh_, vars);

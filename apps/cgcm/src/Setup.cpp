@@ -97,8 +97,8 @@ interaction::ReferenceScales referenceScales(const ParameterList& deck, const ma
 }
 
 // What the deck alone gives (every rank builds it): formulation, material, partition.
-ProblemSetup setupFromDeck(const ParameterList& deck) {
-  ProblemSetup s;
+solver::ProblemSetup setupFromDeck(const ParameterList& deck) {
+  solver::ProblemSetup s;
   s.formulation = parseFormulation(deck.sublist("Problem").get<std::string>("Formulation"));
   s.material = material::fromParameters(deck.sublist("Material"));
   s.partition = assembly::parseCellPartition(deck.sublist("Solver").get<std::string>("Partition"));
@@ -108,7 +108,7 @@ ProblemSetup setupFromDeck(const ParameterList& deck) {
 }
 
 // The interaction between the bodies: read when the model has interacting bodies (its r_S0 places u = 0).
-const interaction::InteractionSetup& readInteraction(const ParameterList& deck, ProblemSetup& s) {
+const interaction::InteractionSetup& readInteraction(const ParameterList& deck, solver::ProblemSetup& s) {
   if (!s.interaction)
     s.interaction = interaction::fromParameters(deck.sublist("Interaction"), referenceScales(deck, s.material),
                                                 s.formulation);
@@ -117,7 +117,7 @@ const interaction::InteractionSetup& readInteraction(const ParameterList& deck, 
 
 // Joins a model to the deck's set-up: the force scale, the interaction when the bodies interact (read
 // from the deck if not yet) with its report lines, the model's lines.
-void attachModel(ProblemSetup& s, mesh::Model model, const ParameterList& deck) {
+void attachModel(solver::ProblemSetup& s, mesh::Model model, const ParameterList& deck) {
   s.forceScale = model.forceScale(s.material.youngsModulus());
   if (model.interacting) readInteraction(deck, s);  // ranks other than 0 read it here
   if (s.interaction) {
@@ -134,8 +134,8 @@ void attachModel(ProblemSetup& s, mesh::Model model, const ParameterList& deck) 
 
 }  // namespace
 
-ProblemSetup buildProblem(const ParameterList& deck) {
-  ProblemSetup s = setupFromDeck(deck);
+solver::ProblemSetup buildProblem(const ParameterList& deck) {
+  solver::ProblemSetup s = setupFromDeck(deck);
   const auto& geometry = deck.sublist("Geometry");
   const std::string type = geometry.get<std::string>("Type");
   // absurd sizes are refused before the mesh is allocated (mesh files: once read)
@@ -164,7 +164,7 @@ namespace {
 
 // What rank 0's model and mesh add to the deck's set-up, without the mesh: the
 // other ranks make the rest from the deck themselves (setupFromDeck).
-std::vector<char> toBytes(const ProblemSetup& s) {
+std::vector<char> toBytes(const solver::ProblemSetup& s) {
   core::ByteWriter out;
   mesh::put(out, s.model);
   out.put(s.bodyMaterials);
@@ -175,9 +175,9 @@ std::vector<char> toBytes(const ProblemSetup& s) {
   return out.take();
 }
 
-ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vector<char>& bytes) {
+solver::ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vector<char>& bytes) {
   core::ByteReader in(bytes);
-  ProblemSetup s = setupFromDeck(deck);
+  solver::ProblemSetup s = setupFromDeck(deck);
   attachModel(s, mesh::getModel(in), deck);
   s.bodyMaterials = in.getVector<material::NeoHookean>();
   s.report.resize(in.getCount(sizeof(std::uint64_t)));  // rank 0's, the body materials' lines included
@@ -190,11 +190,11 @@ ProblemSetup setupFromBytes(const Teuchos::ParameterList& deck, const std::vecto
 
 }  // namespace
 
-ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck) {
+solver::ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck) {
   if (comm.getSize() == 1) return buildProblem(deck);
-  ProblemSetup setup;
+  solver::ProblemSetup setup;
   std::vector<char> bytes;
-  runOnRoot(comm, [&] {
+  solver::runOnRoot(comm, [&] {
     setup = buildProblem(deck);
     bytes = toBytes(setup);
   });

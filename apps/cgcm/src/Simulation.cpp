@@ -37,7 +37,7 @@ namespace {
 // its own); --check only tells whether it could be.
 void prepareOutput(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck, const std::string& dir,
                    RunMode mode) {
-  runOnRoot(comm, [&] {
+  solver::runOnRoot(comm, [&] {
     if (mode == RunMode::Restart) return;
     // the error_code forms: a name the file system refuses is bad input, not an exception
     std::error_code ec;
@@ -80,7 +80,7 @@ solver::LoadStepper::CheckpointSink checkpointSink(const std::string& dir, const
 
 // What the run cost: solves, the Jacobian's size, memory and mesh per rank,
 // the assembly timings since `before`, Method 1's pair statistics.
-void measureCost(RunResult& result, const Discretization& disc, const solver::NewtonSolver& newton,
+void measureCost(RunResult& result, const solver::Discretization& disc, const solver::NewtonSolver& newton,
                  const assembly::AssemblyTimings& timingsBefore) {
   const auto& problem = disc.problem;
   // LOCA does not report its solves (its groups do not log them to NOX's statistics).
@@ -132,13 +132,13 @@ void measureCost(RunResult& result, const Discretization& disc, const solver::Ne
 }
 
 // The deck's Loading sublist for this problem: gammaW and gammaL can be continued in when the bodies interact.
-solver::PathPlan planOf(const Teuchos::ParameterList& deck, const ProblemSetup& setup) {
+solver::PathPlan planOf(const Teuchos::ParameterList& deck, const solver::ProblemSetup& setup) {
   if (!setup.interaction) return solver::PathPlan(deck.sublist("Loading"), {}, 0.0);
   return solver::PathPlan(deck.sublist("Loading"), {"gammaW", "gammaL"}, setup.interaction->potential->r0());
 }
 
 // Solver/Newton with the problem's force scale.
-solver::NewtonSettings newtonSettingsOf(const Teuchos::ParameterList& deck, const ProblemSetup& setup) {
+solver::NewtonSettings newtonSettingsOf(const Teuchos::ParameterList& deck, const solver::ProblemSetup& setup) {
   auto settings = solver::NewtonSettings::fromParameters(deck.sublist("Solver").sublist("Newton"),
                                                          deck.sublist("Solver").sublist("Linear Solver"));
   settings.forceScale = setup.forceScale;
@@ -162,7 +162,7 @@ std::optional<Checkpoint> resumeOf(RunMode mode, const solver::PathPlan& plan, c
 }
 
 // The solvers the path needs, and where a restart resumes.
-solver::PathContext pathContext(const Discretization& disc, solver::NewtonSolver& newton,
+solver::PathContext pathContext(const solver::Discretization& disc, solver::NewtonSolver& newton,
                                 solver::Continuation& continuation, const std::optional<Checkpoint>& resume,
                                 const Vector& previous) {
   solver::PathContext context;
@@ -189,8 +189,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // The run's first lines: the problem's size, the control, the set-up's report, the convergence test.
-void logStart(std::ostream& log, const ProblemSetup& setup, const solver::PathPlan& plan, long numDofs, int ranks,
-              const solver::NewtonSettings& newton) {
+void logStart(std::ostream& log, const solver::ProblemSetup& setup, const solver::PathPlan& plan, long numDofs,
+              int ranks, const solver::NewtonSettings& newton) {
   log << "cgcm: " << formulationName(setup.formulation) << ", " << setup.numNodes << " nodes, " << setup.numCells
       << " cells, " << numDofs << " dofs, " << ranks << " rank(s); " << plan.follower().name() << " control\n";
   for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
@@ -200,7 +200,7 @@ void logStart(std::ostream& log, const ProblemSetup& setup, const solver::PathPl
 
 // The initial guess: the prescribed motion of whole bodies at the first u (a
 // restart: the checkpoint's state, and the one before it in `previous`).
-void initialGuess(const ProblemSetup& setup, const Discretization& disc, const solver::PathPlan& plan,
+void initialGuess(const solver::ProblemSetup& setup, const solver::Discretization& disc, const solver::PathPlan& plan,
                   const Checkpoint* resume, RootGather& gather, Vector& u, Vector& previous) {
   if (resume) {
     gather.scatter(resume->u, u);
@@ -225,7 +225,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 
   // Build: everything that can be rejected is checked before any work starts.
   const auto setupStart = std::chrono::steady_clock::now();
-  const ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
+  const solver::ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
   const double meshSeconds = secondsSince(setupStart);
   const solver::PathPlan plan = planOf(deck, setup);
   const solver::NewtonSettings newtonSettings = newtonSettingsOf(deck, setup);
@@ -235,7 +235,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const std::optional<Checkpoint> resume = resumeOf(mode, plan, dir);
   prepareOutput(*comm, deck, dir, mode);
   const auto distributionStart = std::chrono::steady_clock::now();
-  const Discretization disc = discretize(comm, setup, linearSolverSettings);
+  const solver::Discretization disc = solver::discretize(comm, setup, linearSolverSettings);
   const double distributionSeconds = secondsSince(distributionStart);
   const long numDofs = long(disc.dofs->ownedMap()->getGlobalNumElements());
   if (resume && long(resume->u.size()) != numDofs)

@@ -21,8 +21,8 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
   both(result.completed ? "completed\n" : ("stopped: " + result.failure + "\n").c_str());
   const auto& c = result.curve;
   if (!c.empty()) {
-    const auto minIt =
-        std::min_element(c.begin(), c.end(), [](const LoadPoint& a, const LoadPoint& b) { return a.P < b.P; });
+    const auto minIt = std::min_element(
+        c.begin(), c.end(), [](const solver::LoadPoint& a, const solver::LoadPoint& b) { return a.P < b.P; });
     std::snprintf(buf, sizeof buf, "P_min = %.10g at u = %.10g (step %d)\n", minIt->P, minIt->u, minIt->step);
     both(buf);
   }

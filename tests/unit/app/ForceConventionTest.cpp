@@ -17,7 +17,7 @@ namespace cgcm {
 namespace {
 
 // The attraction before contact (u from -0.02 to -0.008: gaps of 1.3 to 0.7 r0 above r_S0).
-std::vector<app::LoadPoint> planeStrainCurve(const std::string& name, const std::vector<std::string>& geometry,
+std::vector<solver::LoadPoint> planeStrainCurve(const std::string& name, const std::vector<std::string>& geometry,
                                              bool mirrored = false) {
   auto d = io::readDeck(CGCM_DECK);
   if (mirrored) d->sublist("Geometry").set("Mirror Planes", Teuchos::Array<std::string>(1, "x"));

@@ -260,7 +260,7 @@ TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
   auto& mesh = *setup.model.mesh;
   mesh.nodeIds.resize(std::size_t(mesh.numNodes()));
   for (LocalIndex n = 0; n < mesh.numNodes(); ++n) mesh.nodeIds[std::size_t(n)] = mesh.numNodes() - 1 - n;
-  const auto disc = app::discretize(Tpetra::getDefaultComm(), setup, d->sublist("Solver").sublist("Linear Solver"));
+  const auto disc = solver::discretize(Tpetra::getDefaultComm(), setup, d->sublist("Solver").sublist("Linear Solver"));
   const double stretch[3] = {0.01, 0.02, -0.03};
   assembly::Vector x(disc.dofs->ownedMap());
   {

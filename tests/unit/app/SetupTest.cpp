@@ -49,7 +49,7 @@ void expectSame(const material::NeoHookean& a, const material::NeoHookean& b) {
 }
 
 // `sent` (received from rank 0, or rank 0's own) against `own` (built by this rank from the deck).
-void expectSameSetUp(const app::ProblemSetup& sent, const app::ProblemSetup& own) {
+void expectSameSetUp(const solver::ProblemSetup& sent, const solver::ProblemSetup& own) {
   EXPECT_EQ(sent.formulation, own.formulation);
   expectSame(sent.material, own.material);
   ASSERT_EQ(sent.bodyMaterials.size(), own.bodyMaterials.size());
@@ -142,9 +142,9 @@ TEST(Setup, WhatRankZerosBuildThrowsEveryRankThrows) {
   EXPECT_NE(message.find("no-such-mesh.geo"), std::string::npos) << message;
 
   // the kinds of error keep their types on every rank
-  EXPECT_THROW(app::runOnRoot(*comm, [] { throw NumericalError("a failed evaluation"); }), NumericalError);
+  EXPECT_THROW(solver::runOnRoot(*comm, [] { throw NumericalError("a failed evaluation"); }), NumericalError);
   try {
-    app::runOnRoot(*comm, [] { throw std::logic_error("a broken invariant"); });
+    solver::runOnRoot(*comm, [] { throw std::logic_error("a broken invariant"); });
     ADD_FAILURE() << "nothing thrown";
   } catch (const InputError&) {
     ADD_FAILURE() << "a logic error became bad input";
@@ -154,7 +154,7 @@ TEST(Setup, WhatRankZerosBuildThrowsEveryRankThrows) {
     EXPECT_STREQ(e.what(), "a broken invariant");
   }
   int calls = 0;
-  app::runOnRoot(*comm, [&] { ++calls; });
+  solver::runOnRoot(*comm, [&] { ++calls; });
   EXPECT_EQ(calls, comm->getRank() == 0 ? 1 : 0);
 }
 
@@ -167,7 +167,7 @@ TEST(Setup, APartRankZeroCannotCutStopsEveryRank) {
   auto setup = app::buildProblem(*comm, *deck);
   if (setup.model.mesh) setup.model.mesh->coords.insert(setup.model.mesh->coords.end(), {9.0, 9.0});
   try {
-    app::discretize(comm, setup, deck->sublist("Solver").sublist("Linear Solver"));
+    solver::discretize(comm, setup, deck->sublist("Solver").sublist("Linear Solver"));
     ADD_FAILURE() << "a node of no cell was distributed";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("belongs to no cell"), std::string::npos) << e.what();

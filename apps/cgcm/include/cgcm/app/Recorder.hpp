@@ -47,8 +47,8 @@ class Recorder {
   /// `resume` (a restart): continues the files of `dir` after the checkpoint's
   /// last row (later rows, written after it, are dropped) and starts the curve
   /// with the checkpoint's rows.
-  Recorder(const ProblemSetup& setup, const Discretization& disc, const ContactProbe* probe, const std::string& dir,
-           bool exodus, int parameterIndex, bool print, std::ostream& log,
+  Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,
+           const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
            const solver::Checkpoint* resume = nullptr);
 
   /// Steps in results.e so far (rank 0; 0 without Exodus output).
@@ -57,11 +57,11 @@ class Recorder {
   /// Records an accepted state of the path (its step, flags and solver figures with it). Collective.
   void record(const solver::PathState& state);
 
-  std::vector<LoadPoint> curve;
+  std::vector<solver::LoadPoint> curve;
 
  private:
-  const ProblemSetup& setup_;
-  const mesh::Mesh& mesh_;  ///< the mesh the problem assembles (Discretization::mesh)
+  const solver::ProblemSetup& setup_;
+  const mesh::Mesh& mesh_;  ///< the mesh the problem assembles (solver::Discretization::mesh)
   solver::ModelEvaluator& model_;
   const ContactProbe* probe_;
   int parameterIndex_;

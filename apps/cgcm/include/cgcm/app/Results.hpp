@@ -34,7 +34,7 @@ class ResultsWriter {
   /// body); keptSteps >= 0: continues the existing file after that many
   /// steps (a restart). Throws InputError (rank 0) if it cannot be created
   /// or continued. Collective.
-  ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const Discretization& disc,
+  ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const solver::Discretization& disc,
                 const std::vector<std::string>& globals, int keptSteps = -1);
 
   /// Steps written to the file so far (rank 0; 0 elsewhere).
@@ -56,7 +56,7 @@ class ResultsWriter {
   std::vector<Real> inMeshOrder(const std::vector<Real>& byGlobalNode) const;
 
   const mesh::Mesh* mesh_;  ///< the whole mesh (rank 0)
-  const Discretization& disc_;
+  const solver::Discretization& disc_;
   std::vector<std::string> globals_;
   bool root_;
   solver::RootGather gather_;

@@ -9,12 +9,6 @@
 
 namespace cgcm::app {
 
-// The set-up and the discrete problem are the solver package's (cgcm/solver/Discretization.hpp).
-using solver::Discretization;
-using solver::discretize;
-using solver::ProblemSetup;
-using solver::runOnRoot;
-
 /// Every parameter a deck may hold, with defaults and documentation.
 Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 
@@ -24,11 +18,11 @@ void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath);
 
 /// Builds the problem a validated deck describes. Throws InputError for
 /// combinations that the validators alone cannot reject.
-ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
+solver::ProblemSetup buildProblem(const Teuchos::ParameterList& deck);
 /// The same on several ranks: rank 0 builds the problem (it alone meshes and reads mesh files) and
 /// sends the others its model without the mesh, the body materials and the report; they read the
-/// rest of the deck themselves (their `model.mesh` is null; discretize() gives each its subdomain as
-/// Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
-ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
+/// rest of the deck themselves (their `model.mesh` is null; solver::discretize() gives each its subdomain as
+/// solver::Discretization::mesh). What rank 0's build throws, every rank throws. Collective.
+solver::ProblemSetup buildProblem(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList& deck);
 
 }  // namespace cgcm::app

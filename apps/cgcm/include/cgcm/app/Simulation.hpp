@@ -15,10 +15,9 @@
 
 namespace cgcm::app {
 
-using solver::LoadPoint;  ///< one row of the load curve
 
 struct RunResult {
-  std::vector<LoadPoint> curve;
+  std::vector<solver::LoadPoint> curve;
   bool completed = false;           ///< the whole path was traversed
   std::string failure;              ///< why not
   double assemblySeconds = 0.0;     ///< bulk residual + tangent evaluations
