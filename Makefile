@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study pulloff-map stability-map sphere-3d method-study sanitize fuzz peers
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map stability-map sphere-3d method-study sanitize fuzz peers
 
 deps:
 	@bash scripts/install-deps.sh
@@ -79,6 +79,14 @@ paper: build
 jkr-study: build
 	@bash tools/run_jkr_study.sh $(BUILD_DIR)
 
+# The JKR end at small contacts: gammaL = 2000, Tabor mu = 2, 3, 5; Method 3
+# with both surface densities at finite and small strain, Method 1 restarted
+# near the minimum, against the Lennard-Jones sphere (tools/jkr_end_study.py):
+# output/validation/jkr-end, and the plot into doc/figures (about 40 minutes).
+jkr-end: build
+	/usr/bin/python3 tools/jkr_end_study.py --build $(BUILD_DIR) --output output/validation/jkr-end --jobs $(JOBS)
+	cp output/validation/jkr-end/jkr_end.png doc/figures/jkr-end.png
+
 # Pull-off force over Tabor mu 0.05 .. 5 at gammaL = 50 and 200, finite and
 # small strain on the same meshes (tools/pulloff_map.py): output/pulloff-map,
 # and the plot into doc/figures. Finished runs are reused. Cases needing a
@@ -107,9 +115,9 @@ sphere-3d: build
 	  "Output/Print Steps=false" "Geometry/Mesh Numbers/lcSphere=0.1" "Geometry/Mesh Numbers/lcFar=0.8" \
 	  "Geometry/Mesh Numbers/zone=0.5"
 	/usr/bin/python3 tests/tools/check_load_curve.py pulloff $(SPHERE3D_OUT)/load_curve.csv \
-	  --expected=-5.6355e-4 --tolerance 0.02
+	  --expected=-5.6189e-4 --tolerance 0.02
 	/usr/bin/python3 tests/tools/check_load_curve.py stiffness $(SPHERE3D_OUT)/load_curve.csv \
-	  --from 0.05 --to 0.06 --expected 0.2616 --tolerance 0.02
+	  --from 0.05 --to 0.06 --expected 0.2657 --tolerance 0.02
 
 # Method 1 (volume pairs) against Method 3 on the benchmark: gammaL = 50, 200,
 # 20 with cells of 1.25 r0 at the surfaces, Method 1 again on a contact zone

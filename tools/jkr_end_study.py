@@ -1,206 +1,241 @@
 #!/usr/bin/env python3
-"""Surface-density check of Method 3 at one state of a cgcm results.e
-(axisymmetric sphere on half-space, Lennard-Jones, doc/theory.md#method-3).
+"""The JKR end of the pull-off force at small contacts: the sphere on the
+half-space at one large gammaL (default 2000, contact radii of a few
+hundredths of R at the minimum) over Tabor mu (default 2, 3, 5), against
+the Lennard-Jones sphere (cgcm-analytic ljsphere: Derjaguin, small strain).
+At mu = 8 (cells of 0.4 r0) the jump-in does not reach the contact branch
+within the default 400 relaxation iterations (|f| 7.6e-5 after 11 min).
 
-Method 3 integrates the traction with the reference density over the current
-area, f = N T(r) rbar (rbar.n) da. Particle conservation in the surface layer
-gives beta da = beta0 dA, i.e. the density beta0/J_s on the current surface
-with J_s = da/dA the surface stretch (axisymmetric: J_s = (x/X)(|t|/|T|)), or
-beta0/J with the volume ratio J of the cell under the surface (the
-one-dimensional surface-layer picture), or the same on both bodies
-(beta_k/J_k beta_l/J_l). It also evaluates the Derjaguin reading of the
-same deformed state, the one of the Lennard-Jones sphere reference
-(cgcm-analytic ljsphere): the law at the vertical gap on the projected ring
-area, which shows what the closest-point direction changes. This tool re-evaluates Method 3's force on each
-body from the deformed surfaces of results.e (the same closest-point
-projection onto the other body's polyline, Gauss points on [0, 1], the
-tapered 9-3 law), checks it against the code's own nodal
-interaction_force_*, and prints the resultant with da and with each
-density correction, the surface stretch J_s over the interaction zone
-(where the traction is tensile and where it peaks) and the force change
-each correction makes, in units of pi w R.
+Each mu runs Method 3 with both surface densities (Interaction/Surface
+Density: "reference area", the default, and "current area"), each at finite
+and at small strain, on the band mesh (meshes/sphere-on-half-space-band.geo)
+with cells of at most a quarter cohesive length E* r_S0^2 / w and r0, along
+the path tools/pulloff_map.py plans (approach through the jump-to-contact,
+retraction past the minimum). Method 1 (Interaction/Method = volume pair,
+finite strain) is the arbiter: its jump-in on these meshes would take hours,
+so a Method 3 run with a checkpoint stops three states before Method 3's
+minimum and Method 1 goes on from there (cgcm --restart) to three states
+after it; its minimum is taken over its own states only.
 
-It evaluates one state without re-equilibrating it: the printed changes are
-first-order estimates of how much the correction would move P_min.
+Writes table.csv and jkr_end.png into --output; finished runs are reused.
 
-    jkr_end_study.py output/run/results.e --gammaL 2000 --gammaW 14.6378
-                     [--step N (1-based; default: the stable step of smallest P)]
-                     [--points 4] [--cutoff 10] [--taper 0.2] [--profile]
-
-Measured (gammaL 2000, mu 5, band mesh of cells l/4 as tools/pulloff_map.py
-plans it, finite strain, state of P_min = -1.602 pi w R): J_s = 1.03 .. 1.06
-where the tension exceeds half its peak (tension-weighted mean 1.026), and
-beta0/J_s moves the force by -2.8 %; Method 1 on the same mesh gives -2.3 %.
+    jkr_end_study.py --build build --output output/validation/jkr-end
+                     [--gammaL 2000] [--mu 2 3 5] [--cell-size 0.25] [--jobs 2]
+                     [--no-method1] [--rerun] [--plot-only]
 """
 import argparse
+import concurrent.futures
+import csv
 import math
+import os
+import shutil
+import subprocess
+import time
 
-import netCDF4
-import numpy as np
+import matplotlib
 
-F_W = math.pi / 8 * 15 ** (1 / 3)
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import pulloff_map as pm  # noqa: E402
+from analytic_csv import lj_sphere_pulloff  # noqa: E402
 
-
-def names(ds, var):
-    return [netCDF4.chartostring(n).item() for n in ds.variables[var][:]] if var in ds.variables else []
-
-
-def surfaces(ds):
-    """Per side set ('contact:<body>'): segments as (node a, node b, element index, block) with the
-    body on the left of a -> b (counter-clockwise quads), so n = (t_y, -t_x)/|t| points outward."""
-    blocks = [np.array(ds.variables[f"connect{b + 1}"][:]) - 1 for b in range(len(names(ds, "eb_names")))]
-    offsets = np.cumsum([0] + [len(c) for c in blocks])
-    out = {}
-    for i, name in enumerate(names(ds, "ss_names")):
-        elems = np.array(ds.variables[f"elem_ss{i + 1}"][:]) - 1
-        sides = np.array(ds.variables[f"side_ss{i + 1}"][:]) - 1
-        segs = []
-        for e, s in zip(elems, sides):
-            b = int(np.searchsorted(offsets, e, side="right") - 1)
-            conn = blocks[b][e - offsets[b]]
-            k = len(conn) if len(conn) in (3, 4) else 4
-            segs.append((conn[s], conn[(s + 1) % k], e - offsets[b], b))
-        out[name.split(":", 1)[-1]] = segs
-    return out
+DENSITIES = {"reference": "reference area", "current": "current area"}
+KINEMATICS = ("finite strain", "small strain")
 
 
-def traction_law(gl, gw, cutoff, taper):
-    """T(r) = beta0^2 Phi/beta0 with R0 = Y = beta0 = 1 (beta0^2 eps r0^3 = 1/gammaW), tapered."""
-    r0 = 1.0 / gl
-    rc, rt = cutoff * r0, (1.0 - taper) * cutoff * r0
-
-    def T(r):
-        q = r0 / r
-        t = (math.pi / gw) * (q ** 9 / 45.0 - q ** 3 / 3.0)
-        s = np.clip((r - rt) / (rc - rt), 0.0, 1.0)
-        return np.where(r >= rc, 0.0, t * (1.0 - s * s * (3.0 - 2.0 * s)))
-    return T
+def stable_rows(csv_path, after_step=None):
+    with open(csv_path, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r["stable"] == "1"]
+    return [r for r in rows if after_step is None or int(r["step"]) > after_step]
 
 
-def project(p, a, b):
-    """Closest points of points p (n, 2) on the polyline of segments a -> b (m, 2): distance,
-    foot, index of the segment (brute force, clamped to the segment)."""
-    d = b - a
-    dd = np.einsum("ij,ij->i", d, d)
-    rel = p[:, None, :] - a[None, :, :]
-    lam = np.clip(np.einsum("nmj,mj->nm", rel, d) / dd[None, :], 0.0, 1.0)
-    foot = a[None, :, :] + lam[..., None] * d[None, :, :]
-    dist2 = np.einsum("nmj,nmj->nm", p[:, None, :] - foot, p[:, None, :] - foot)
-    k = np.argmin(dist2, axis=1)
-    idx = np.arange(len(p))
-    return np.sqrt(dist2[idx, k]), foot[idx, k], k
+def retraction(rows):
+    """The states from the deepest approach on: the pull-off is the minimum of the separation (at
+    small strain the landing of the jump-in can lie lower)."""
+    if not rows:
+        return rows
+    top = max(range(len(rows)), key=lambda i: float(rows[i]["u"]))
+    return rows[top:]
 
 
-def evaluate(ds, step, gl, gw, npts, cutoff, taper):
-    X0, Y0 = np.array(ds.variables["coordx"][:]), np.array(ds.variables["coordy"][:])
-    ux, uy = (np.array(ds.variables[f"vals_nod_var{i}"][step - 1]) for i in (1, 2))
-    x, y = X0 + ux, Y0 + uy
-    elem_names = names(ds, "name_elem_var")
-    jvol = [np.array(ds.variables[f"vals_elem_var{elem_names.index('J') + 1}eb{b + 1}"][step - 1])
-            for b in range(len(names(ds, "eb_names")))]
-    surf = surfaces(ds)
-    T = traction_law(gl, gw, cutoff, taper)
-    g, w = np.polynomial.legendre.leggauss(npts)
-    xi, wq = 0.5 * (g + 1.0), 0.5 * w
-    res = {}
-    for body, other in (("sphere", "half-space"), ("half-space", "sphere")):
-        S, O = np.array(surf[body]), np.array(surf[other])
-        a_n, b_n = S[:, 0], S[:, 1]
-        oa = np.column_stack((x[O[:, 0]], y[O[:, 0]]))
-        ob = np.column_stack((x[O[:, 1]], y[O[:, 1]]))
-        rows = []
-        for q in range(npts):
-            N0, N1 = 1.0 - xi[q], xi[q]
-            p = np.column_stack((N0 * x[a_n] + N1 * x[b_n], N0 * y[a_n] + N1 * y[b_n]))
-            P0 = np.column_stack((N0 * X0[a_n] + N1 * X0[b_n], N0 * Y0[a_n] + N1 * Y0[b_n]))
-            t = np.column_stack((x[b_n] - x[a_n], y[b_n] - y[a_n]))
-            t0 = np.column_stack((X0[b_n] - X0[a_n], Y0[b_n] - Y0[a_n]))
-            L, L0 = np.hypot(t[:, 0], t[:, 1]), np.hypot(t0[:, 0], t0[:, 1])
-            n = np.column_stack((t[:, 1], -t[:, 0])) / L[:, None]
-            da = 2 * math.pi * p[:, 0] * L * wq[q]
-            dA = 2 * math.pi * P0[:, 0] * L0 * wq[q]
-            r, foot, k = project(p, oa, ob)
-            rb = (p - foot) / r[:, None]
-            c = np.einsum("ij,ij->i", rb, n)
-            Tr = T(r)
-            Jk = jvol[S[0, 3]][S[:, 2]]
-            Jl = jvol[O[0, 3]][O[k, 2]]
-            # the Derjaguin reading of the same state (the Lennard-Jones sphere reference's): the law at
-            # the vertical gap to the other surface, on the projected ring area 2 pi x |dx|
-            ox, oy = np.concatenate((oa[:, 0], ob[:, 0])), np.concatenate((oa[:, 1], ob[:, 1]))
-            order = np.argsort(ox)
-            hv = np.abs(p[:, 1] - np.interp(p[:, 0], ox[order], oy[order]))
-            dxp = 2 * math.pi * p[:, 0] * np.abs(t[:, 0]) * wq[q]
-            rows.append(dict(X=P0[:, 0], x=p[:, 0], r=r, T=Tr, c=c, rb=rb, da=da, dA=dA, Jk=Jk, Jl=Jl,
-                             Tv=T(hv), dxp=dxp,
-                             fa0=N0 * Tr * c, fa1=N1 * Tr * c, a=a_n, b=b_n))
-        res[body] = rows
-    return res, (x, y)
+def minimum(rows):
+    """P_min (parabola vertex as tools/pulloff_map.py), its u, whether it is inside the rows, and the
+    contact radius at the lowest state."""
+    if not rows:
+        return float("nan"), float("nan"), False, float("nan")
+    u = [float(r["u"]) for r in rows]
+    p = [float(r["P"]) for r in rows]
+    k = min(range(len(p)), key=p.__getitem__)
+    pmin, umin, inside = pm.parabola_minimum(u, p)
+    return pmin, umin, inside, float(rows[k]["contact_radius"])
 
 
-def resultant(rows, weight):
-    """y-resultant of the force on the body (the applied force is -f): sum of T c rbar_y * weight."""
-    return sum(float(np.sum(-(q["T"] * q["c"] * q["rb"][:, 1]) * weight(q))) for q in rows)
+def run(args, folder, log, rerun, restart=False):
+    """One cgcm command; a finished run of the same command (its log ends with `exit`) is reused."""
+    command = " ".join(args)
+    if not rerun and os.path.exists(log):
+        with open(log) as f:
+            text = f.read()
+        if text.startswith(command + "\n") and "\nexit " in text:
+            return int(text.rsplit("\nexit ", 1)[1].split()[0]), float(text.rsplit(" after ", 1)[1].split()[0])
+    if not restart:
+        shutil.rmtree(folder, ignore_errors=True)  # a failed run must not leave an older curve behind
+    t0 = time.time()
+    proc = subprocess.run(args, capture_output=True, text=True)
+    seconds = time.time() - t0
+    with open(log, "w") as f:
+        f.write(f"{command}\n{proc.stdout}{proc.stderr}\nexit {proc.returncode} after {seconds:.1f} s\n")
+    return proc.returncode, seconds
+
+
+def case_name(case):
+    return f"gL{case['gammaL']:g}-mu{case['mu']:.3g}"
+
+
+def method3(case, density, kinematics, out, rerun):
+    name = f"{case_name(case)}-{density}-{kinematics.split()[0]}"
+    folder = os.path.join(out, name)
+    args = [os.path.join(pm.BUILD, "bin", "cgcm"), os.path.join(pm.ROOT, "inputs", "sphere-on-half-space.xml"),
+            f"Output/Directory={folder}", f"Material/Kinematics={kinematics}", *case["overrides"],
+            f"Interaction/Surface Density={DENSITIES[density]}"]
+    code, seconds = run(args, folder, os.path.join(out, name + ".log"), rerun)
+    curve = os.path.join(folder, "load_curve.csv")
+    pmin, umin, inside, a = minimum(retraction(stable_rows(curve))) if os.path.exists(curve) else (math.nan,) * 2 + (False, math.nan)
+    return name, {"code": code, "seconds": seconds, "P_min": pmin, "u_min": umin, "inside": inside, "a": a,
+                  "curve": curve}
+
+
+def method1(case, reference_run, out, rerun):
+    """Method 3 (reference area, finite strain) with a checkpoint to three states before its minimum,
+    then Method 1 from there to three states after it."""
+    name = f"{case_name(case)}-volume-pair"
+    rows = retraction(stable_rows(reference_run["curve"])) if os.path.exists(reference_run["curve"]) else []
+    if not rows or not reference_run["inside"]:
+        return name, {"code": -1, "seconds": 0.0, "P_min": math.nan, "u_min": math.nan, "inside": False,
+                      "a": math.nan, "restart_step": -1}
+    k = min(range(len(rows)), key=lambda i: float(rows[i]["P"]))
+    stop, end = rows[max(k - 3, 1)], rows[min(k + 3, len(rows) - 1)]
+    start, u_in = case["path"].strip("{}").split(",")[:2]
+    folder = os.path.join(out, name)
+    base = [os.path.join(pm.BUILD, "bin", "cgcm"), os.path.join(pm.ROOT, "inputs", "sphere-on-half-space.xml"),
+            f"Output/Directory={folder}", "Material/Kinematics=finite strain",
+            *[o for o in case["overrides"] if not o.startswith(("Loading/Approach Path", "Output/Checkpoint"))],
+            "Interaction/Surface Density=reference area", "Output/Checkpoint=true",
+            f"Loading/Approach Path={{{start},{u_in},{stop['u']}}}"]
+    code, s1 = run(base, folder, os.path.join(out, name + "-checkpoint.log"), rerun)
+    restart_step = int(stop["step"])
+    if code != 0:
+        return name, {"code": code, "seconds": s1, "P_min": math.nan, "u_min": math.nan, "inside": False,
+                      "a": math.nan, "restart_step": restart_step}
+    stopped = os.path.join(out, name + "-method3.csv")  # the curve up to the restart, kept apart from Method 1's rows
+    if not os.path.exists(stopped) or os.path.getmtime(stopped) < os.path.getmtime(os.path.join(out, name + "-checkpoint.log")):
+        shutil.copyfile(os.path.join(folder, "load_curve.csv"), stopped)
+    restart_step = int(stable_rows(stopped)[-1]["step"])
+    args = [os.path.join(pm.BUILD, "bin", "cgcm"), "--restart", folder, "Interaction/Method=volume pair",
+            f"Loading/Approach Path={{{start},{u_in},{end['u']}}}"]
+    code, s2 = run(args, folder, os.path.join(out, name + ".log"), rerun, restart=True)
+    pmin, umin, inside, a = minimum(stable_rows(os.path.join(folder, "load_curve.csv"), after_step=restart_step))
+    return name, {"code": code, "seconds": s2, "P_min": pmin, "u_min": umin, "inside": inside, "a": a,
+                  "restart_step": restart_step}
+
+
+COLUMNS = ["gammaL", "gammaW", "mu", "cell_over_ell", "lj_sphere"] + [
+    f"{d}_{k.split()[0]}_{q}" for d in DENSITIES for k in KINEMATICS for q in ("P_over_piwR", "percent", "a_over_R")
+] + ["volume_pair_P_over_piwR", "volume_pair_percent", "volume_pair_a_over_R", "volume_pair_seconds", "status"]
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("results")
-    ap.add_argument("--gammaL", type=float, required=True)
-    ap.add_argument("--gammaW", type=float, required=True)
-    ap.add_argument("--step", type=int, help="1-based (default: the stable step of the smallest P)")
-    ap.add_argument("--points", type=int, default=4, help="Gauss points per segment (Interaction/Quadrature Points)")
-    ap.add_argument("--cutoff", type=float, default=10.0, help="in r0")
-    ap.add_argument("--taper", type=float, default=0.2)
-    ap.add_argument("--profile", action="store_true", help="print J_s, J and T against the radius in the zone")
-    a = ap.parse_args()
-    ds = netCDF4.Dataset(a.results)
-    glo = names(ds, "name_glo_var")
-    gv = np.array(ds.variables["vals_glo_var"][:])
-    P, stable = gv[:, glo.index("P")], gv[:, glo.index("stable")]
-    step = a.step or int(np.argmin(np.where(stable > 0.5, P, np.inf))) + 1
-    w = F_W / (a.gammaL * a.gammaW)
-    unit = math.pi * w
-    res, (x, y) = evaluate(ds, step, a.gammaL, a.gammaW, a.points, a.cutoff, a.taper)
-    nod = names(ds, "name_nod_var")
-    fy = np.array(ds.variables[f"vals_nod_var{nod.index('interaction_force_y') + 1}"][step - 1])
-    print(f"step {step}: u = {gv[step - 1, glo.index('u')]:.6g}, P = {P[step - 1]:.6g} = "
-          f"{P[step - 1] / unit:.5f} pi w R, contact radius {gv[step - 1, glo.index('contact_radius')]:.4g}")
-    for body, rows in res.items():
-        nodes = np.unique(np.concatenate([rows[0]["a"], rows[0]["b"]]))
-        code = float(np.sum(fy[nodes]))
-        base = resultant(rows, lambda q: q["da"])
-        v = {"beta0/J_s (dA)": resultant(rows, lambda q: q["dA"]),
-             "beta0/J (cell)": resultant(rows, lambda q: q["da"] / q["Jk"]),
-             "both bodies /J": resultant(rows, lambda q: q["da"] / (q["Jk"] * q["Jl"]))}
-        sgn = 1.0 if base < 0 else -1.0  # the sphere's force is along -y for attraction
-        v["Derjaguin (vert.)"] = sgn * sum(float(np.sum(q["Tv"] * q["dxp"])) for q in rows)
-        wedge = resultant([dict(q, T=np.where(np.abs(q["c"]) < 0.999, q["T"], 0.0)) for q in rows],
-                          lambda q: q["da"])
-        print(f"{body}: force from results.e {code / unit:+.5f}, re-evaluated (da) {base / unit:+.5f} pi w R")
-        for k, val in v.items():
-            print(f"  {k:16s} {val / unit:+.5f}  change {(val - base) / unit:+.5f} pi w R "
-                  f"({100 * (val / base - 1):+.2f} %)")
-        # where the force is gathered: compressive and tensile parts, J_s there
-        allq = {k: np.concatenate([q[k] for q in rows]) for k in ("X", "x", "T", "c", "da", "dA", "Jk", "r")}
-        fyq = -np.concatenate([q["T"] * q["c"] * q["rb"][:, 1] * q["da"] for q in rows])
-        Js = allq["da"] / allq["dA"]
-        comp, tens = fyq[allq["T"] > 0].sum(), fyq[allq["T"] < 0].sum()
-        print(f"  compressive part {comp / unit:+.4f}, tensile part {tens / unit:+.4f} pi w R; from points whose "
-              f"rbar is more than 2.6 deg off the normal (the opening wedge) {wedge / unit:+.4f} pi w R")
-        peak = np.argmin(allq["T"])
-        inzone = allq["T"] < 0.5 * allq["T"].min()
-        wt = np.abs(fyq[allq["T"] < 0])
-        print(f"  peak tension at X = {allq['X'][peak]:.5g}: J_s = {Js[peak]:.5f}, J = {allq['Jk'][peak]:.5f}; "
-              f"where T < T_min/2: J_s {Js[inzone].min():.5f} .. {Js[inzone].max():.5f}; "
-              f"tension-weighted mean J_s {np.sum(wt * Js[allq['T'] < 0]) / wt.sum():.5f}, "
-              f"pressure-weighted {np.sum(np.abs(fyq[allq['T'] > 0]) * Js[allq['T'] > 0]) / max(abs(comp), 1e-300):.5f}")
-        if a.profile:
-            order = np.argsort(allq["X"])
-            sel = order[np.abs(allq["T"][order]) > 1e-3 * np.abs(allq["T"]).max()]
-            for i in sel[:: max(1, len(sel) // 40)]:
-                print(f"    X {allq['X'][i]:.5f} r/r0 {allq['r'][i] * a.gammaL:7.3f} T {allq['T'][i]:+.4e} "
-                      f"c {allq['c'][i]:+.4f} J_s {Js[i]:.5f} J {allq['Jk'][i]:.5f}")
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--output", default="output/validation/jkr-end")
+    ap.add_argument("--gammaL", type=float, default=2000.0)
+    ap.add_argument("--mu", type=float, nargs="+", default=[2.0, 3.0, 5.0])
+    ap.add_argument("--cell-size", type=float, default=0.25,
+                    help="the finest cells in cohesive lengths (and at most r0; default 0.25)")
+    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
+    ap.add_argument("--no-method1", action="store_true", help="Method 3 only")
+    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
+    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
+    args = ap.parse_args()
+    if not args.cell_size > 0.0:
+        ap.error(f"--cell-size must be > 0 (cohesive lengths), not {args.cell_size}")
+    if args.jobs < 1:
+        ap.error(f"--jobs must be at least 1, not {args.jobs}")
+    if not args.gammaL >= 1.0 or any(not m > 0.0 for m in args.mu):
+        ap.error("--gammaL must be >= 1 and every --mu > 0")
+    pm.BUILD = args.build
+    os.makedirs(args.output, exist_ok=True)
+    table = os.path.join(args.output, "table.csv")
+    if not args.plot_only:
+        cases = [pm.plan(args.gammaL, mu, 0, "band", args.cell_size) for mu in args.mu]
+        for c in cases:
+            print(f"{case_name(c)}: gammaW {c['gammaW']:.4g}, {c['mesh']} (cells {c['cell_over_ell']:.2f} of the "
+                  f"cohesive length), path {c['path']}", flush=True)
+        jobs = [(c, d, k) for c in cases for d in DENSITIES for k in KINEMATICS]
+        results = {}
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            for name, r in pool.map(lambda j: method3(*j, args.output, args.rerun), jobs):
+                results[name] = r
+                print(f"{name}: exit {r['code']}, {r['seconds']:.0f} s, P_min {r['P_min']:.6g}", flush=True)
+            if not args.no_method1:
+                ref = {case_name(c): results[f"{case_name(c)}-reference-finite"] for c in cases}
+                for name, r in pool.map(lambda c: method1(c, ref[case_name(c)], args.output, args.rerun), cases):
+                    results[name] = r
+                    print(f"{name}: exit {r['code']}, {r['seconds']:.0f} s, P_min {r['P_min']:.6g} "
+                          f"(from step {r['restart_step']})", flush=True)
+        with open(table, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(COLUMNS)
+            for c in cases:
+                scale = math.pi * c["w"]
+                lj = lj_sphere_pulloff(pm.exe(), c["mu"])
+                row = [f"{c['gammaL']:g}", f"{c['gammaW']:.6g}", f"{c['mu']:.4g}", f"{c['cell_over_ell']:.3f}",
+                       f"{lj:.5f}"]
+                bad = []
+                runs = [f"{case_name(c)}-{d}-{k.split()[0]}" for d in DENSITIES for k in KINEMATICS]
+                if not args.no_method1:
+                    runs.append(f"{case_name(c)}-volume-pair")
+                for name in runs:
+                    r = results[name]
+                    p = r["P_min"] / scale
+                    row += [f"{p:.5f}", f"{100 * (p / lj - 1):.2f}", f"{r['a']:.4g}"]
+                    if r["code"] != 0 or not r["inside"]:
+                        bad.append(f"{name}: exit {r['code']}" + ("" if r["inside"] else " (minimum not inside)"))
+                if args.no_method1:
+                    row += ["", "", ""]
+                row += [f"{results.get(f'{case_name(c)}-volume-pair', {}).get('seconds', 0.0):.0f}",
+                        ";".join(bad) or "ok"]
+                w.writerow(row)
+        print(f"wrote {table}")
+    plot(table, os.path.join(args.output, "jkr_end.png"))
+
+
+def plot(table, png):
+    with open(table, newline="") as f:
+        rows = list(csv.DictReader(f))
+    mu = [float(r["mu"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    ax.axhspan(-1.5, 1.5, color="0.9", lw=0)
+    ax.axhline(0.0, color="k", lw=1.2, label="Lennard-Jones sphere (Derjaguin, small strain)")
+    styles = [("reference_finite", "o-", "C0", "Method 3, β0 dA (default), finite strain"),
+              ("reference_small", "o:", "C0", "Method 3, β0 dA, small strain"),
+              ("current_finite", "s-", "C3", "Method 3, β0 da, finite strain"),
+              ("current_small", "s:", "C3", "Method 3, β0 da, small strain"),
+              ("volume_pair", "D-", "C2", "Method 1 (volume pairs), finite strain")]
+    for key, style, color, label in styles:
+        y = [float(r[f"{key}_percent"]) if r[f"{key}_percent"] else math.nan for r in rows]
+        mfc = "none" if ":" in style else color
+        ax.plot(mu, y, style, color=color, mfc=mfc, ms=6, lw=0.9, label=label)
+    ax.set_xscale("log")
+    ax.set_xticks(mu)
+    ax.set_xticklabels([f"{m:g}" for m in mu])
+    ax.set_xlabel(f"Tabor parameter μ (γL = {rows[0]['gammaL']})")
+    ax.set_ylabel("|P_min| against the Lennard-Jones sphere (%)")
+    ax.legend(fontsize=7.5, loc="upper left")
+    ax.grid(True, which="both", lw=0.3, alpha=0.5)
+    fig.tight_layout()
+    fig.savefig(png, dpi=130)
+    print(f"wrote {png}")
 
 
 if __name__ == "__main__":

@@ -9,9 +9,9 @@
 #   12, 13                M-D comparisons (tools/plot_paper_states.py)
 #   demo, soft JKR        the default deck; the soft sphere on mesh levels 0 and 1
 #   JKR limit, stability  the long studies (make jkr-study, stability-map,
-#   map, pull-off map,    pulloff-map, method-study, mesh-convergence): run if
-#   Method 1 vs 3, mesh   their tables are missing under output/, otherwise
-#   convergence           plotted from them
+#   map, pull-off map,    pulloff-map, jkr-end, method-study,
+#   JKR end, Method 1     mesh-convergence): run if their tables are missing
+#   vs 3, mesh conv.      under output/, otherwise plotted from them
 #
 # The plain (unbarred) gammaL, gammaW of the paper decks: literal reading of
 # gammaL bar = 50 and gammaW bar = 200, 20 (doc/theory.md).
@@ -84,6 +84,12 @@ if [ -s output/pulloff-map/table.csv ]; then
   cp output/pulloff-map/pulloff_map.png doc/figures/pulloff-map.png
 else
   make --no-print-directory pulloff-map BUILD_DIR="$build" || status=1
+fi
+if [ -s output/validation/jkr-end/table.csv ]; then
+  $py tools/jkr_end_study.py --build "$build" --output output/validation/jkr-end --plot-only || status=1
+  cp output/validation/jkr-end/jkr_end.png doc/figures/jkr-end.png
+else
+  make --no-print-directory jkr-end BUILD_DIR="$build" || status=1
 fi
 if [ ! -s output/validation/mesh-convergence/orders.csv ]; then
   make --no-print-directory mesh-convergence BUILD_DIR="$build" || status=1

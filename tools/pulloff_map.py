@@ -122,8 +122,12 @@ def minimum_force(csv_path):
         rows = [r for r in csv.DictReader(f) if r["stable"] == "1"]
     if not rows:  # a run stopped before its first state
         return float("nan"), float("nan"), False
-    u = [float(r["u"]) for r in rows]
-    p = [float(r["P"]) for r in rows]
+    return parabola_minimum([float(r["u"]) for r in rows], [float(r["P"]) for r in rows])
+
+
+def parabola_minimum(u, p):
+    """P_min, its u and whether it is inside the states: the vertex of the parabola through the
+    lowest state and its neighbours."""
     k = min(range(len(p)), key=p.__getitem__)
     inside = 0 < k < len(p) - 1
     if not inside:
@@ -194,6 +198,9 @@ def main():
                     help="the finest cells in cohesive lengths E* r_S0^2 / w (and at most r0); "
                          "default 0.4, and 0.25 above mu = 2 (cell_size_for)")
     ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
+    ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="a further deck override for every run (repeatable), e.g. "
+                         "\"Interaction/Surface Density=reference area\"")
     ap.add_argument("--plan", action="store_true", help="print the cases and their meshes, run nothing")
     ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
     args = ap.parse_args()
@@ -212,6 +219,8 @@ def main():
         if args.jobs < 1:
             ap.error(f"--jobs must be at least 1, not {args.jobs}")
         cases = [plan(gl, mu, args.max_level, args.mesh, args.cell_size or cell_size_for(mu)) for gl, mu in grid]
+        for c in cases:
+            c["overrides"] += args.set
         for c in cases:
             print(f"gammaL {c['gammaL']:g}, mu {c['mu']:.3g}: gammaW {c['gammaW']:.4g}, lambda {c['lambda']:.3g}, "
                   f"{c['mesh']}, zone {c['zone']:.3g} (cells {c['cell_over_ell']:.2f} of the cohesive length), "

@@ -62,6 +62,13 @@ Teuchos::RCP<const ParameterList> validParameters() {
                "Gauss points per surface segment; in 3D per direction of a facet (n x n on a quadrilateral; on a "
                "triangle 1, 6, 7 points for n = 1, 2, 3 and 6 n (n + 1) beyond), and 2 unless given",
                intAtLeast(1));
+    inter->set("Surface Density", "reference area",
+               "half-space point: how a body's surface layer is counted. \"reference area\": the reference density "
+               "beta0 over the undeformed area dA, the layer's particles conserved as the surface stretches (the "
+               "default); \"current area\": beta0 over the current area da, the paper's eq. (21), which counts a "
+               "stretched layer's particles more than once and at strong adhesion overestimates the pull-off "
+               "(doc/theory.md#surface-density)",
+               choices({"current area", "reference area"}));
     inter->set("Cutoff", 10.0, "interaction cutoff in units of r0: farther points are skipped", atLeast(1.0));
     inter->set("Cutoff Taper", 0.2,
                "fraction of the cutoff over which the traction is blended smoothly (C1) to zero, 0 .. 0.9; "
@@ -145,6 +152,9 @@ InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& 
   // 3D: n x n points per quad, 6 or 7 per triangle at n = 2, 3, but 6 n (n + 1) beyond: 2 unless set
   const bool threeD = formulation == Formulation::ThreeD;
   surface.quadraturePoints = threeD && in.getEntry("Quadrature Points").isDefault() ? 2 : in.get<int>("Quadrature Points");
+  surface.surfaceDensity = in.get<std::string>("Surface Density") == "reference area"
+                               ? SurfaceDensity::ReferenceArea
+                               : SurfaceDensity::CurrentArea;
   surface.cutoff = in.get<double>("Cutoff") * phys.r0;
   surface.cutoffTaper = in.get<double>("Cutoff Taper");
   surface.projectionSmoothing = in.get<double>("Projection Smoothing") * phys.r0;
@@ -174,7 +184,9 @@ std::shared_ptr<Interaction> InteractionSetup::create(const mesh::Mesh& mesh) co
   const std::vector<Real> densities(std::size_t(mesh.numBodies), density);
   if (method == Method::VolumePair)
     return std::make_shared<VolumeInteraction>(mesh, densities, potential, volumeOptions);
-  return std::make_shared<SurfaceInteraction>(mesh.surfaces, densities, potential, surfaceOptions);
+  auto surface = std::make_shared<SurfaceInteraction>(mesh.surfaces, densities, potential, surfaceOptions);
+  surface->setReferenceConfiguration(mesh.coords);
+  return surface;
 }
 
 std::vector<ScalarParameter> InteractionSetup::scalarParameters(std::shared_ptr<Interaction> interaction) const {
@@ -245,6 +257,9 @@ std::vector<std::string> describe(const InteractionSetup& s, const ReferenceScal
     << "), |T(taper start)| = " << std::abs(s.potential->traction(taperStart, beta0, beta0)) / sigmaMax
     << " sigma_max(Lennard-Jones), work removed by the cutoff = "
     << 100.0 * neglectedWorkFraction(*s.potential, taperStart, cutoff) << " % of w";
+  if (s.method == Method::HalfSpacePoint)
+    o << ", surface density beta0 over the "
+      << (s.surfaceOptions.surfaceDensity == SurfaceDensity::ReferenceArea ? "reference" : "current") << " area";
   lines.push_back(o.str());
   o.str("");
   o << "Lennard-Jones scales (of its r0 and epsilon, whatever the potential): Tabor mu = " << tabor

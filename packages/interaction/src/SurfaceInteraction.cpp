@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <type_traits>
 #include <variant>
 
@@ -367,7 +368,7 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
     for (int l = 0; l < nb; ++l) {
       if (!near[std::size_t(k) * nb + l]) continue;
       ++summary_.numQuadraturePoints;
-      const std::size_t point = firstPoint_[k] + std::size_t(e) * pointsPerFacet(k) + q;
+      const std::size_t point = pointIndex(k, e, q);
       LocalIndex& hint = hints_[point * nb + l];
       const Projection pr = search_[l]->project(x, cutoff_, hint);
       hint = pr.facet;
@@ -428,6 +429,7 @@ PairState SurfaceInteraction::evaluatePair3D(const P& potential, const Real* coo
   out.numColNodes = nc;
   const auto law = this->law(potential, p.body, p.otherBody);
   const FacetPoint& q = facetRules_[p.body][p.qp];
+  const Real* dA = referenceAreaOf(p);
   // One target: its contribution. Several: the softmin blend over rho_t
   // (header), K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta].
   Real f[kMaxBlendTargets3D][12], rho[kMaxBlendTargets3D], Jrho[kMaxBlendTargets3D][21];
@@ -441,7 +443,7 @@ PairState SurfaceInteraction::evaluatePair3D(const P& potential, const Real* coo
     for (int a = 0; a < 3; ++a)
       for (int i = 0; i < 3; ++i) z[3 * npf + 3 * a + i] = coords[3 * std::size_t(out.colNodes[col[t][a]]) + i];
     Real* K = withTangent ? Kt[t] : nullptr;
-    st[t] = npf == 4 ? method3Pair3D<4>(z, q, law, f[t], K) : method3Pair3D<3>(z, q, law, f[t], K);
+    st[t] = npf == 4 ? method3Pair3D<4>(z, q, law, f[t], K, dA) : method3Pair3D<3>(z, q, law, f[t], K, dA);
     bool finite = true;
     for (int i = 0; i < 3 * npf; ++i) finite = finite && std::isfinite(f[t][i]);
     if (!(st[t].distance > 0.0) || !finite) {
@@ -533,9 +535,10 @@ PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* c
   const auto law = this->law(potential, p.body, p.otherBody);
   const Real xi = rule_.points[p.qp], w = rule_.weights[p.qp];
   const bool axi = options_.formulation == Formulation::Axisymmetric;
+  const Real* dA = referenceAreaOf(p);
   auto kernel = [&](int t, Real f[4], Real (*K)[8], Real* Jr) {
-    return axi ? method3Pair<Formulation::Axisymmetric>(z[t], xi, w, law, f, K, Jr)
-               : method3Pair<Formulation::PlaneStrain>(z[t], xi, w, law, f, K, Jr);
+    return axi ? method3Pair<Formulation::Axisymmetric>(z[t], xi, w, law, f, K, Jr, dA)
+               : method3Pair<Formulation::PlaneStrain>(z[t], xi, w, law, f, K, Jr, dA);
   };
 
   if (nt == 1) {  // the closest segment alone (no smoothing, or no other segment near)
@@ -603,7 +606,46 @@ PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* c
   return st[closest];
 }
 
+void SurfaceInteraction::setReferenceConfiguration(const Real* coords) {
+  std::vector<Real> areas(surfaces_.empty() ? 0 : pointIndex(numBodies() - 1, surfaces_.back().numFacets(), 0));
+  for (int k = 0; k < numBodies(); ++k) {
+    const mesh::Surface& sk = surfaces_[k];
+    const int npf = sk.nodesPerFacet;
+    for (LocalIndex e = 0; e < sk.numFacets(); ++e) {
+      const LocalIndex* nodes = &sk.facets[std::size_t(e) * npf];
+      for (int q = 0; q < int(pointsPerFacet(k)); ++q) {
+        Real dA;
+        if (dim_ == 3) {  // |G1 x G2| w, as da of Method3Kernel3D.hpp in the undeformed facet
+          const FacetPoint& fq = facetRules_[k][q];
+          Real g[2][3] = {};
+          for (int a = 0; a < npf; ++a)
+            for (int i = 0; i < 3; ++i)
+              for (int d = 0; d < 2; ++d) g[d][i] += fq.dN[d][a] * coords[3 * std::size_t(nodes[a]) + i];
+          const Real m[3] = {g[0][1] * g[1][2] - g[0][2] * g[1][1], g[0][2] * g[1][0] - g[0][0] * g[1][2],
+                             g[0][0] * g[1][1] - g[0][1] * g[1][0]};
+          dA = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * fq.weight;
+        } else {  // |T| w, times 2 pi X_0 in axisymmetry, as da of Method3Kernel.hpp
+          const Real* a = coords + 2 * std::size_t(nodes[0]);
+          const Real* b = coords + 2 * std::size_t(nodes[1]);
+          const Real xi = rule_.points[q];
+          dA = std::hypot(b[0] - a[0], b[1] - a[1]) * rule_.weights[q];
+          if (options_.formulation == Formulation::Axisymmetric) dA *= 2.0 * kPi * ((1.0 - xi) * a[0] + xi * b[0]);
+        }
+        if (!(dA > 0.0) || !std::isfinite(dA))
+          throw InputError("surface interaction: facet " + std::to_string(e) + " of body " + std::to_string(k) +
+                           " has reference area element " + std::to_string(dA) + " at its point " +
+                           std::to_string(q) + " (a degenerate facet, or on the axis)");
+        areas[pointIndex(k, e, q)] = dA;
+      }
+    }
+  }
+  referenceAreas_ = std::move(areas);
+}
+
 void SurfaceInteraction::beginEvaluation() {
+  if (options_.surfaceDensity == SurfaceDensity::ReferenceArea && referenceAreas_.empty())
+    throw std::logic_error("surface interaction: the reference surface density needs setReferenceConfiguration "
+                           "before the first evaluation");
   summary_.resultant.assign(surfaces_.size(), {0.0, 0.0, 0.0});
   summary_.minDistance = std::numeric_limits<Real>::infinity();
   summary_.numVertexProjections = 0;

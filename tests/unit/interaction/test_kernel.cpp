@@ -46,12 +46,14 @@ std::vector<Case> cases(Real shiftX) {
 }
 
 template <Formulation F>
-void residual(const Real z[8], Real xi, Real w, const TractionLaw<InversePowerPair>& law, Real f[4]) {
-  method3Pair<F>(z, xi, w, law, f, nullptr);
+void residual(const Real z[8], Real xi, Real w, const TractionLaw<InversePowerPair>& law, Real f[4],
+              const Real* referenceArea) {
+  method3Pair<F>(z, xi, w, law, f, nullptr, nullptr, referenceArea);
 }
 
+// referenceArea: the constant dA of SurfaceDensity::ReferenceArea, or null (the current da)
 template <Formulation F>
-void checkCase(const Case& c, const PairPotential& pot) {
+void checkCase(const Case& c, const PairPotential& pot, const Real* referenceArea = nullptr) {
   const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(pot.kernelPotential()), kBeta1 * kBeta2, kNoCutoff,
                                           kNoCutoff};
   const GaussRule rule = gaussLegendreUnit(4);
@@ -59,7 +61,7 @@ void checkCase(const Case& c, const PairPotential& pot) {
   for (int q = 0; q < rule.size(); ++q) {
     const Real xi = rule.points[q], w = rule.weights[q];
     Real f[4], K[4][8];
-    const PairState st = method3Pair<F>(c.z, xi, w, law, f, K);
+    const PairState st = method3Pair<F>(c.z, xi, w, law, f, K, nullptr, referenceArea);
     if (c.expectedRegion >= 0) {
       ASSERT_EQ(st.region, c.expectedRegion) << c.name << " qp " << q;
     }
@@ -76,8 +78,8 @@ void checkCase(const Case& c, const PairPotential& pot) {
       std::copy(c.z, c.z + 8, zm);
       zp[j] += h;
       zm[j] -= h;
-      residual<F>(zp, xi, w, law, fp);
-      residual<F>(zm, xi, w, law, fm);
+      residual<F>(zp, xi, w, law, fp, referenceArea);
+      residual<F>(zm, xi, w, law, fm, referenceArea);
       for (int i = 0; i < 4; ++i) Kfd[i][j] = (fp[i] - fm[i]) / (2 * h);
     }
 
@@ -91,7 +93,7 @@ void checkCase(const Case& c, const PairPotential& pot) {
       const Fad s3 = s * s * s;
       return Fad(C * (s3 * s3 * s3 / 45.0 - (repulsiveOnly ? 0.0 : 1.0) * s3 / 3.0));
     };
-    method3PairResidualGeneric<F>(zf, xi, w, traction, ff);
+    method3PairResidualGeneric<F>(zf, xi, w, traction, ff, referenceArea);
 
     Real kmax = 0.0;
     for (int i = 0; i < 4; ++i)
@@ -105,8 +107,8 @@ void checkCase(const Case& c, const PairPotential& pot) {
       }
     }
   }
-  std::printf("[kernel] %-13s %-14s %-13s max|K - K_fd|/max|K| = %.2e, max|K - K_ad|/max|K| = %.2e\n",
-              formulationName(F), c.name.c_str(), pot.name().c_str(), worstFd, worstAd);
+  std::printf("[kernel] %-13s %-14s %-13s %s max|K - K_fd|/max|K| = %.2e, max|K - K_ad|/max|K| = %.2e\n",
+              formulationName(F), c.name.c_str(), pot.name().c_str(), referenceArea ? "dA" : "da", worstFd, worstAd);
   // tolerances: 1e-6 relative to FD (step 1e-6), 1e-12 relative to AD (exact)
   EXPECT_LT(worstFd, 1e-6) << c.name;
   EXPECT_LT(worstAd, 1e-12) << c.name;
@@ -130,6 +132,35 @@ TEST(Method3Kernel, TangentAxisymmetric) {
   // the axis itself (node at rho = 0)
   Case onAxis{"axis-node", {0.0, 0.95, 1.1, 1.1, 1.6, 0.1, 0.0, -0.05}, 0};
   checkCase<Formulation::Axisymmetric>(onAxis, lj);
+}
+
+TEST(Method3Kernel, TangentWithTheReferenceArea) {
+  const LennardJones lj(1.0, 1.0);
+  const Real dA = 0.37;  // any constant: the kernel takes it as given
+  for (const Case& c : cases(0.0)) checkCase<Formulation::PlaneStrain>(c, lj, &dA);
+  for (const Case& c : cases(2.5)) checkCase<Formulation::Axisymmetric>(c, lj, &dA);
+}
+
+// Given the current da as dA, the reference-area residual is the current-area one bit for bit,
+// and the tangents differ by the d(da)/dz term alone: T c rbar (x) d(da)/dz, rank one per node.
+TEST(Method3Kernel, ReferenceAreaEqualToTheCurrentOneChangesOnlyTheAreaTerm) {
+  const LennardJones lj(1.0, 1.0);
+  const TractionLaw<InversePowerPair> law{std::get<InversePowerPair>(lj.kernelPotential()), kBeta1 * kBeta2, kNoCutoff,
+                                          kNoCutoff};
+  const Case c = cases(0.0)[0];
+  const Real xi = 0.3, w = 0.25;
+  const Real da = std::hypot(c.z[2] - c.z[0], c.z[3] - c.z[1]) * w;
+  Real f[4], K[4][8], fA[4], KA[4][8];
+  method3Pair<Formulation::PlaneStrain>(c.z, xi, w, law, f, K);
+  method3Pair<Formulation::PlaneStrain>(c.z, xi, w, law, fA, KA, nullptr, &da);
+  // d(da)/dz: da = |t| w with t = z_b - z_a of the point's segment
+  const Real L = std::hypot(c.z[2] - c.z[0], c.z[3] - c.z[1]);
+  const Real e[2] = {(c.z[2] - c.z[0]) / L, (c.z[3] - c.z[1]) / L};
+  const Real Jda[8] = {-e[0] * w, -e[1] * w, e[0] * w, e[1] * w, 0, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(fA[i], f[i]);
+    for (int j = 0; j < 8; ++j) EXPECT_NEAR(K[i][j] - KA[i][j], f[i] / da * Jda[j], 1e-12 * std::abs(K[i][j]) + 1e-15);
+  }
 }
 
 TEST(Method3Kernel, TangentOfTheOtherBodysPoint) {

@@ -50,13 +50,17 @@ TwoBodies curvedPair(Real x0, Real gap) {
   return tb;
 }
 
-void checkGlobalTangent(Formulation form) {
+void checkGlobalTangent(Formulation form, SurfaceDensity density = SurfaceDensity::CurrentArea) {
   TwoBodies tb = curvedPair(form == Formulation::Axisymmetric ? 0.3 : -1.0, 0.75);
   auto lj = std::make_shared<LennardJones>(1.0, 1.0);
   SurfaceInteractionOptions opt;
   opt.formulation = form;
   opt.cutoff = 1.5;
+  opt.surfaceDensity = density;
   SurfaceInteraction si(tb.surfaces, {1.0, 1.3}, lj, opt);
+  std::vector<Real> reference = tb.coords;  // a reference configuration other than the current one
+  for (std::size_t i = 0; i < reference.size(); i += 2) reference[i] *= 0.93;
+  si.setReferenceConfiguration(reference);
   si.updatePairs(tb.coords);
   ASSERT_GT(si.summary().numPairs, 50);
   ASSERT_GT(si.summary().numBeyondCutoff, 0);  // the wavy surface is longer than the arc
@@ -65,9 +69,9 @@ void checkGlobalTangent(Formulation form) {
   // step 1e-7: the weights of the projection blend vary on the scale of the
   // default smoothing, 1e-3 r0 (truncation error ~ (step / delta)^2)
   const Real worst = tangentError(si, tb.coords, 1e-7);
-  std::printf("[driver] %s global tangent (%d pairs, %d vertex projections): max|K - K_fd|/max|K| = %.2e\n",
-              formulationName(form), int(si.summary().numPairs), int(si.summary().numVertexProjections),
-              worst);
+  std::printf("[driver] %s, %s area: global tangent (%d pairs, %d vertex projections): max|K - K_fd|/max|K| = %.2e\n",
+              formulationName(form), density == SurfaceDensity::ReferenceArea ? "reference" : "current",
+              int(si.summary().numPairs), int(si.summary().numVertexProjections), worst);
   // 1e-6 relative (central differences)
   EXPECT_LT(worst, 1e-6);
 }
@@ -76,6 +80,63 @@ void checkGlobalTangent(Formulation form) {
 
 TEST(SurfaceInteraction, GlobalTangentPlaneStrain) { checkGlobalTangent(Formulation::PlaneStrain); }
 TEST(SurfaceInteraction, GlobalTangentAxisymmetric) { checkGlobalTangent(Formulation::Axisymmetric); }
+TEST(SurfaceInteraction, GlobalTangentWithTheReferenceArea) {
+  checkGlobalTangent(Formulation::PlaneStrain, SurfaceDensity::ReferenceArea);
+  checkGlobalTangent(Formulation::Axisymmetric, SurfaceDensity::ReferenceArea);
+}
+
+// The upper flat of the flat-on-flat test stretched along the surface by lambda from its reference
+// (plane strain: a strip of reference length 5/lambda; axisymmetric: a disc of reference radius
+// 5/lambda): with the current area it carries T(h) times its current area, with the reference area
+// T(h) times its reference area, each exactly (the rules integrate the linear and quadratic area
+// elements exactly; relative 1e-12 for the rounding of the sums).
+TEST(SurfaceInteraction, ReferenceAreaCountsTheUndeformedLayer) {
+  const Real b1 = 2.0, b2 = 0.5, h = 0.9, lambda = 1.07;
+  auto lj = std::make_shared<LennardJones>(0.7, 1.3);
+  for (Formulation form : {Formulation::PlaneStrain, Formulation::Axisymmetric}) {
+    const bool axi = form == Formulation::Axisymmetric;
+    std::vector<Real> coords;
+    std::vector<mesh::Surface> s;
+    s.push_back(addPolyline(coords, samplePolyline([](Real t, Real& x, Real& y) { x = 10.0 - 10.0 * t, y = 0.0; }, 40), 0));
+    s.push_back(addPolyline(coords,
+                            samplePolyline([&](Real t, Real& x, Real& y) { x = 5.0 * (t + 0.1 * std::sin(kPi * t)), y = h; }, 23),
+                            1));
+    std::vector<Real> reference = coords;
+    for (LocalIndex node : s[1].facets) reference[2 * std::size_t(node)] /= lambda;
+    const Real T = lj->traction(h, b1, b2);
+    for (SurfaceDensity density : {SurfaceDensity::CurrentArea, SurfaceDensity::ReferenceArea}) {
+      SurfaceInteractionOptions opt;
+      opt.formulation = form;
+      opt.cutoff = 30.0;
+      opt.projectionSmoothing = 0.0;
+      opt.surfaceDensity = density;
+      SurfaceInteraction si(s, {b1, b2}, lj, opt);
+      si.setReferenceConfiguration(reference);
+      si.updatePairs(coords);
+      std::vector<PairContribution> c;
+      si.evaluate(coords, c);
+      const Real radius = density == SurfaceDensity::ReferenceArea ? 5.0 / lambda : 5.0;
+      const Real area = axi ? kPi * radius * radius : radius;
+      EXPECT_NEAR(si.summary().resultant[1][1], T * area, 1e-12 * std::abs(T * area))
+          << formulationName(form) << (density == SurfaceDensity::ReferenceArea ? ", reference area" : ", current area");
+    }
+  }
+}
+
+TEST(SurfaceInteraction, ReferenceAreaNeedsTheReferenceConfiguration) {
+  TwoBodies tb = curvedPair(-1.0, 0.75);
+  SurfaceInteractionOptions opt;
+  opt.surfaceDensity = SurfaceDensity::ReferenceArea;
+  SurfaceInteraction si(tb.surfaces, {1.0, 1.0}, std::make_shared<LennardJones>(1.0, 1.0), opt);
+  si.updatePairs(tb.coords);
+  std::vector<PairContribution> c;
+  EXPECT_THROW(si.evaluate(tb.coords, c), std::logic_error);
+  std::vector<Real> collapsed = tb.coords;  // every node of body 1 at one point: zero reference area
+  for (LocalIndex node : tb.surfaces[1].facets) collapsed[2 * std::size_t(node)] = collapsed[2 * std::size_t(node) + 1] = 0.0;
+  EXPECT_THROW(si.setReferenceConfiguration(collapsed), InputError);
+  si.setReferenceConfiguration(tb.coords);
+  EXPECT_NO_THROW(si.evaluate(tb.coords, c));
+}
 
 TEST(SurfaceInteraction, StrengthScalesForcesAndTangents) {
   // setStrength(s) is epsilon -> s epsilon: every f and K scale by s.

@@ -228,6 +228,40 @@ TEST(SurfaceInteraction3D, BlendIsContinuousAcrossAConcaveEdge) {
   }
 }
 
+// A quad grid of current size 2 x 2 at height h over a wide flat, stretched by (1.1, 1.05) from its
+// reference: it carries T(h) times its current area 4 with the current area, times its reference
+// area 4 / (1.1 x 1.05) with the reference area (the Gauss rule integrates both exactly; relative
+// 1e-12 for the rounding of the sums).
+TEST(SurfaceInteraction3D, ReferenceAreaCountsTheUndeformedLayer) {
+  const Real h = 0.6, sx = 1.1, sy = 1.05;
+  Scene sc;
+  sc.surfaces.push_back(flatGrid(sc.coords, 6, 4.0, false, 0));
+  mesh::Surface upper = flatGrid(sc.coords, 4, 1.0, false, 1);
+  for (std::size_t f = 0; f < upper.facets.size(); f += 4) std::swap(upper.facets[f + 1], upper.facets[f + 3]);  // normal -z
+  const std::size_t firstUpper = std::size_t(sc.surfaces[0].facets.back()) + 1;
+  for (std::size_t n = firstUpper; n < sc.coords.size() / 3; ++n) sc.coords[3 * n + 2] = h;
+  sc.surfaces.push_back(upper);
+  std::vector<Real> reference = sc.coords;
+  for (std::size_t n = firstUpper; n < sc.coords.size() / 3; ++n) reference[3 * n] /= sx, reference[3 * n + 1] /= sy;
+  const auto lj = makePotential("lennard-jones", 1.0, 0.5);
+  const Real T = lj->traction(h, 1.0, 1.0);
+  for (SurfaceDensity density : {SurfaceDensity::CurrentArea, SurfaceDensity::ReferenceArea}) {
+    SurfaceInteractionOptions o;
+    o.formulation = Formulation::ThreeD;
+    o.quadraturePoints = 2;
+    o.cutoff = 10.0;
+    o.surfaceDensity = density;
+    SurfaceInteraction si(sc.surfaces, {1.0, 1.0}, lj, o);
+    si.setReferenceConfiguration(reference);
+    si.updatePairs(sc.coords);
+    std::vector<PairContribution> c;
+    si.evaluate(sc.coords, c, false);
+    const Real area = density == SurfaceDensity::ReferenceArea ? 4.0 / (sx * sy) : 4.0;
+    EXPECT_NEAR(si.summary().resultant[1][2], T * area, 1e-12 * std::abs(T * area))
+        << (density == SurfaceDensity::ReferenceArea ? "reference area" : "current area");
+  }
+}
+
 TEST(SurfaceInteraction3D, CouplingsCoverEveryPair) {
   Scene sc = capOverFlat(false);
   SurfaceInteraction si = makeInteraction(sc);

@@ -13,12 +13,16 @@
 //     da = |t| w              (plane strain, per unit thickness),
 //     da = 2 pi x_0 |t| w     (axisymmetric, x_0 = radial coordinate of x),
 // with w the Gauss weight on [0, 1] and T(r) = beta_k beta_l Phi(r)/beta.
+// With the reference surface density (SurfaceDensity::ReferenceArea) the
+// caller passes the point's reference area element dA (|T| w, or 2 pi X_0 |T| w,
+// of the undeformed segment) and da is replaced by that constant: the layer's
+// particles beta0 dA are counted once however the surface stretches.
 // f is the contribution to the internal side of f_int + f_C - f_ext = 0;
 // the force applied to body k is -f.
 //
 // The tangent K = d f / d z (4 x 8) is the exact derivative of this
 // residual as implemented: projection with clamping, rbar, the factor
-// rbar . n and da (including x_0 in the axisymmetric case).
+// rbar . n and da (including x_0 in the axisymmetric case; none with dA).
 #include <Kokkos_Macros.hpp>
 #include <cmath>
 
@@ -68,11 +72,12 @@ KOKKOS_INLINE_FUNCTION Real overshootBeyondEnd(const Real x[2], const Real a[2],
 /// f receives the 4 residual entries [a_x, a_y, b_x, b_y] of segment e's
 /// nodes; K (may be null) the 4 x 8 derivative with respect to z; Jr (may be
 /// null, filled only together with K) the gradient dr/dz of the distance.
-/// The caller checks state.distance > 0 (r = 0: the point lies on the other
-/// surface).
+/// referenceArea (may be null): the point's reference area element dA, used
+/// instead of the current da (see the header). The caller checks
+/// state.distance > 0 (r = 0: the point lies on the other surface).
 template <Formulation Form, class Law>
 KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weight, const Law& law, Real f[4],
-                                             Real (*K)[8], Real* Jr = nullptr) {
+                                             Real (*K)[8], Real* Jr = nullptr, const Real* referenceArea = nullptr) {
   constexpr Real twoPi = 2.0 * kPi;
   PairState st;
   const Real N0 = 1.0 - xi, N1 = xi;
@@ -81,7 +86,9 @@ KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weig
   const Real L = std::sqrt(t[0] * t[0] + t[1] * t[1]);
   const Real n[2] = {t[1] / L, -t[0] / L};
   const Real ds = L * weight;
-  const Real da = (Form == Formulation::Axisymmetric) ? twoPi * x[0] * ds : ds;
+  const Real da = referenceArea != nullptr               ? *referenceArea
+                  : (Form == Formulation::Axisymmetric) ? twoPi * x[0] * ds
+                                                         : ds;
 
   Real lam, xp[2];
   const Real d2 = projectOntoSegment(x, z + 4, z + 6, lam, xp, st.region);
@@ -149,7 +156,9 @@ KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weig
     const Real Jn1 = (-Jt[0][j] - n[1] * JL) / L;
     Jc[j] = n[0] * Jrb[0][j] + n[1] * Jrb[1][j] + rb[0] * Jn0 + rb[1] * Jn1;
     const Real Jds = weight * JL;
-    Jda[j] = (Form == Formulation::Axisymmetric) ? twoPi * (Jx[0][j] * ds + x[0] * Jds) : Jds;
+    Jda[j] = referenceArea != nullptr               ? 0.0
+             : (Form == Formulation::Axisymmetric) ? twoPi * (Jx[0][j] * ds + x[0] * Jds)
+                                                    : Jds;
   }
   // F = s rbar with s = T c da
   for (int j = 0; j < 8; ++j) {
@@ -166,9 +175,11 @@ KOKKOS_INLINE_FUNCTION PairState method3Pair(const Real z[8], Real xi, Real weig
 
 /// The same residual written for a generic scalar type S (double or a
 /// forward-AD type such as Sacado::Fad::SFad<double, 8>): a reference for
-/// checking the hand-derived tangent. `traction(r)` returns T(r) as an S.
+/// checking the hand-derived tangent. `traction(r)` returns T(r) as an S;
+/// referenceArea as in method3Pair.
 template <Formulation Form, class S, class TractionFn>
-void method3PairResidualGeneric(const S z[8], Real xi, Real weight, const TractionFn& traction, S f[4]) {
+void method3PairResidualGeneric(const S z[8], Real xi, Real weight, const TractionFn& traction, S f[4],
+                                const Real* referenceArea = nullptr) {
   using std::sqrt;
   constexpr Real twoPi = 2.0 * kPi;
   const Real N0 = 1.0 - xi, N1 = xi;
@@ -177,7 +188,7 @@ void method3PairResidualGeneric(const S z[8], Real xi, Real weight, const Tracti
   const S L = sqrt(t0 * t0 + t1 * t1);
   const S n0 = t1 / L, n1 = -t0 / L;
   const S ds = L * weight;
-  const S da = (Form == Formulation::Axisymmetric) ? S(twoPi * x0 * ds) : ds;
+  const S da = referenceArea != nullptr ? S(*referenceArea) : (Form == Formulation::Axisymmetric) ? S(twoPi * x0 * ds) : ds;
   const S d0 = z[6] - z[4], d1 = z[7] - z[5];
   const S dd = d0 * d0 + d1 * d1;
   const S lam = ((x0 - z[4]) * d0 + (x1 - z[5]) * d1) / dd;

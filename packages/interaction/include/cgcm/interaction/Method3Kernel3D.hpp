@@ -11,8 +11,10 @@
 // n = g1 x g2 / |g1 x g2| with g_i = dx/dxi_i, and
 //     f_a = N_a T(r) rbar (rbar . n) da,    da = |g1 x g2| w,
 // T(r) = beta_k beta_l Phi(r)/beta the half-space traction (the same law as
-// in 2D). f is the contribution to the internal side of f_int + f_C - f_ext;
-// the force applied to body k is -f.
+// in 2D). With the reference surface density the caller passes the point's
+// reference area element dA = |G1 x G2| w of the undeformed facet, which
+// replaces da (as in 2D). f is the contribution to the internal side of
+// f_int + f_C - f_ext; the force applied to body k is -f.
 //
 // The target surface is piecewise flat: a quad4 facet of l enters the search
 // as two triangles, so a projection never needs a Newton solve on a bilinear
@@ -100,9 +102,10 @@ inline S tractionOf(const Law& law, const S& r, Real& dT) {
 }
 
 /// The residual f (3 NF entries) for a fixed projection region; also the
-/// state's distance, traction and cos(alpha).
+/// state's distance, traction and cos(alpha). referenceArea: as in method3Pair3D.
 template <int NF, class S, class Law>
-inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const Law& law, S* f, PairState& st) {
+inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const Law& law, S* f, PairState& st,
+                              const Real* referenceArea) {
   S x[3] = {0.0, 0.0, 0.0}, g[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
   for (int a = 0; a < NF; ++a)
     for (int i = 0; i < 3; ++i) {
@@ -122,8 +125,9 @@ inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const
   const S r = sqrt(dot3(d, d));
   Real dT;
   const S T = tractionOf(law, r, dT);
-  // T rbar (rbar . n) da = T d (d . m) w / r^2
-  const S s = T * dot3(d, m) * q.weight / (r * r);
+  // T rbar (rbar . n) da = T d (d . m) w / r^2; with dA: T d (d . m) dA / (|m| r^2)
+  const S s = referenceArea != nullptr ? S(T * dot3(d, m) * *referenceArea / (jac * r * r))
+                                       : S(T * dot3(d, m) * q.weight / (r * r));
   for (int a = 0; a < NF; ++a)
     for (int i = 0; i < 3; ++i) f[3 * a + i] = q.N[a] * s * d[i];
   st.distance = scalarValue(r);
@@ -175,9 +179,12 @@ Real method3BlendDistance3D(const Real* z, const FacetPoint& q, int region, Real
 
 /// Evaluates one pair: f (3 NF entries, node-major) and, if K is not null,
 /// K[i * (3 NF + 9) + j] = df_i/dz_j. `law(r, T, dT)` gives T(r) and dT/dr.
-/// The caller checks state.distance > 0 (r = 0: the point lies on s).
+/// referenceArea (may be null): the point's reference area element dA, used
+/// instead of the current da. The caller checks state.distance > 0 (r = 0:
+/// the point lies on s).
 template <int NF, class Law>
-PairState method3Pair3D(const Real* z, const FacetPoint& q, const Law& law, Real* f, Real* K) {
+PairState method3Pair3D(const Real* z, const FacetPoint& q, const Law& law, Real* f, Real* K,
+                        const Real* referenceArea = nullptr) {
   constexpr int nz = 3 * NF + 9, nf = 3 * NF;
   PairState st;
   Real x[3] = {0.0, 0.0, 0.0};
@@ -187,13 +194,13 @@ PairState method3Pair3D(const Real* z, const FacetPoint& q, const Law& law, Real
   int region = 0;
   projectOntoTriangle(x, z + nf, z + nf + 3, z + nf + 6, xi, p, region);
   if (K == nullptr) {
-    detail::method3Residual3D<NF>(z, q, region, law, f, st);
+    detail::method3Residual3D<NF>(z, q, region, law, f, st, referenceArea);
     return st;
   }
   using Fad = Sacado::Fad::SFad<Real, nz>;
   Fad zf[nz], ff[nf];
   for (int j = 0; j < nz; ++j) zf[j] = Fad(nz, j, z[j]);
-  detail::method3Residual3D<NF>(zf, q, region, law, ff, st);
+  detail::method3Residual3D<NF>(zf, q, region, law, ff, st, referenceArea);
   for (int i = 0; i < nf; ++i) {
     f[i] = ff[i].val();
     for (int j = 0; j < nz; ++j) K[i * nz + j] = ff[i].dx(j);

@@ -66,8 +66,21 @@
 
 namespace cgcm::interaction {
 
+/// How Method 3 counts the particles of a body's surface layer (doc/theory.md#method-3).
+enum class SurfaceDensity {
+  /// beta0 over the current area element da: eq. (21) of the paper. Where the surface
+  /// stretches (J_s = da/dA > 1, at an opening contact edge) the layer's particles are
+  /// counted J_s times.
+  CurrentArea,
+  /// beta0 over the reference area element dA: the particles beta0 dA of the undeformed
+  /// layer, conserved however the surface stretches (Method 1 conserves them exactly).
+  ReferenceArea,
+};
+
 struct SurfaceInteractionOptions {
   Formulation formulation = Formulation::PlaneStrain;
+  /// ReferenceArea needs SurfaceInteraction::setReferenceConfiguration before the first evaluation.
+  SurfaceDensity surfaceDensity = SurfaceDensity::CurrentArea;
   /// Gauss points per segment (2D) or per direction of a facet (3D: n^2 per
   /// facet, the collapsed rule on triangles), >= 1.
   int quadraturePoints = 4;
@@ -235,6 +248,13 @@ class SurfaceInteraction final : public Interaction {
   /// facet. Throws InputError unless there is one flag per facet of each body.
   void setEvaluatedFacets(std::vector<std::vector<char>> evaluated);
 
+  /// The undeformed coordinates (dim() entries per node, indexed by the mesh's
+  /// node indices): the reference area element dA of every quadrature point,
+  /// which SurfaceDensity::ReferenceArea integrates over. Throws InputError for
+  /// a degenerate facet (dA <= 0 or not finite).
+  void setReferenceConfiguration(const Real* coords);
+  void setReferenceConfiguration(const std::vector<Real>& coords) { setReferenceConfiguration(coords.data()); }
+
   /// Rebuilds the search structures at `coords` (dim() entries per node,
   /// indexed by the mesh's node indices) and the pair list. Call once per evaluation: at the
   /// surface coordinates (and cutoff) of the last call it returns at once
@@ -346,6 +366,15 @@ class SurfaceInteraction final : public Interaction {
   template <class Visit, class FacetDone>
   void forEachPoint(const Real* coords, Visit&& visit, FacetDone&& facetDone) const;
   std::size_t pointsPerFacet(int k) const { return dim_ == 3 ? facetRules_[k].size() : std::size_t(rule_.size()); }
+  /// Index of quadrature point q of facet e of body k among every body's points.
+  std::size_t pointIndex(int k, LocalIndex e, int q) const {
+    return firstPoint_[k] + std::size_t(e) * pointsPerFacet(k) + q;
+  }
+  /// The dA the kernels integrate over at pair p's point (ReferenceArea), or null (CurrentArea).
+  const Real* referenceAreaOf(const InteractionPair& p) const {
+    return options_.surfaceDensity == SurfaceDensity::ReferenceArea ? &referenceAreas_[pointIndex(p.body, p.facet, p.qp)]
+                                                                    : nullptr;
+  }
   /// Pairs of bodies (k, l) whose surfaces come within `radius` (bounding boxes).
   std::vector<char> bodiesWithin(const Real* coords, Real radius) const;
   Real vertexPenalty(const Real* coords, int l, LocalIndex s, const Real x[2], int region, Real* grad,
@@ -372,6 +401,7 @@ class SurfaceInteraction final : public Interaction {
   Real searchedCutoff_ = -1.0, searchedSmoothing_ = -1.0;
   std::vector<std::size_t> firstPoint_;  ///< [body]: index of its first (facet, quadrature point)
   std::vector<LocalIndex> hints_;        ///< [point * numBodies + other body]: last projection's facet, or -1
+  std::vector<Real> referenceAreas_;     ///< [point]: dA (setReferenceConfiguration), empty until set
   std::vector<std::vector<LocalIndex>> neighbours_;  ///< [body][2 s + end]: segment sharing that node, or -1
   std::vector<InteractionPair> pairs_;
   std::vector<std::vector<char>> evaluatedFacets_;  ///< [body][facet], empty: all (setEvaluatedFacets)
