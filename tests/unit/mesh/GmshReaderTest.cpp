@@ -499,7 +499,20 @@ TEST(CellTypeTableAgainstGmsh, TypeNameAndNodeOrder) {
     gmsh::model::mesh::getElementProperties(row.gmshFacetType, facetName, facetDim, order, numNodes, facetLocal,
                                             numPrimary);
     EXPECT_EQ(facetDim, row.dim - 1);
-    EXPECT_EQ(numNodes, row.nodesPerFacet) << facetName;
+    ASSERT_EQ(numNodes, row.nodesPerFacet) << facetName;
+    // gmsh's facet element orders its nodes as our facets do (core/CellType.hpp): the corners,
+    // then mid-edge node k between corners k and k + 1, then the face centre
+    const int corners = facetCornerCount(row), fd = std::max(facetDim, 1);
+    auto facetAt = [&](int a, int i) { return facetLocal[std::size_t(fd) * std::size_t(a) + i]; };
+    for (int a = corners; a < numNodes; ++a)
+      for (int i = 0; i < facetDim; ++i) {
+        const int k = a - corners;
+        Real want = 0.0;
+        if (k < corners) want = 0.5 * (facetAt(k, i) + facetAt((k + 1) % corners, i));
+        else
+          for (int c = 0; c < corners; ++c) want += facetAt(c, i) / corners;
+        EXPECT_NEAR(facetAt(a, i), want, 1e-14) << facetName << " node " << a;
+      }
     fem::withElement(row.type, [&](auto element) {
       using E = decltype(element);
       for (int a = 0; a < E::numNodes; ++a) {
