@@ -65,6 +65,39 @@ TEST(Geometry, ABlockIsStretchedOnRollersAndDoesNotInteract) {
   EXPECT_EQ(modelOf(g, Formulation::ThreeD).conditions.size(), 6u);
 }
 
+std::string inputErrorOf(Teuchos::ParameterList g, Formulation f) {
+  try {
+    modelOf(g, f);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+TEST(Geometry, ElementOrderMakesQuadraticCellsOfEveryBuiltInGeometry) {
+  for (const Formulation f : {Formulation::Axisymmetric, Formulation::PlaneStrain}) {
+    Teuchos::ParameterList g;
+    g.set("Element Order", 2);
+    const Model m = modelOf(g, f);
+    for (const auto& b : m.mesh->blocks) EXPECT_EQ(b.type, CellType::Quad9) << b.name;
+    EXPECT_EQ(m.mesh->surfaces[0].nodesPerFacet, 3);
+    g.set("Serendipity", true);
+    for (const auto& b : modelOf(g, f).mesh->blocks) EXPECT_EQ(b.type, CellType::Quad8) << b.name;
+  }
+  Teuchos::ParameterList g;
+  g.set("Type", std::string("block"));
+  g.set("Element Order", 2);
+  EXPECT_EQ(modelOf(g, Formulation::ThreeD).mesh->blocks[0].type, CellType::Hex27);
+  g.sublist("Block").set("Element", std::string("tet4"));
+  EXPECT_EQ(modelOf(g, Formulation::ThreeD).mesh->blocks[0].type, CellType::Tet10);
+  g.set("Element Order", 1);
+  g.set("Serendipity", true);
+  EXPECT_NE(inputErrorOf(g, Formulation::ThreeD).find("Geometry/Serendipity = true needs Geometry/Element Order = 2"),
+            std::string::npos);
+  g.set("Element Order", 3);
+  EXPECT_THROW(io::validateDeck(g, *validParameters(), "Geometry/"), InputError);  // the validator: 1 .. 2
+}
+
 TEST(Geometry, TheBuiltInContactGeometriesAreRefusedIn3D) {
   try {
     modelOf(Teuchos::ParameterList(), Formulation::ThreeD);
