@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 #include "cgcm/core/Error.hpp"
@@ -185,8 +186,15 @@ Teuchos::RCP<const ParameterList> validParameters() {
               "3D cell shape: \"hex8\" or \"tet4\" (6 per hexahedron); with Geometry/Element Order = 2 they are "
               "HEX27 (HEX20 with Serendipity) and TETRA10",
               choices({"hex8", "tet4"}));
+    block.set("Load", "stretch",
+              "\"stretch\": the face at the far end of the last axis moves by u along that axis, on symmetry rollers; "
+              "\"bend\": a cantilever (plane strain or 3D): the face x = 0 clamped, the lower edge of the face x = "
+              "Length X (node set \"tip\": the corner (Length X, 0) in 2D, the line x = Length X, z = 0 in 3D) moves "
+              "by u along the last axis (y in 2D, z in 3D), the rest is free; P is the tip force along that axis",
+              choices({"stretch", "bend"}));
     block.set("Loaded Face", "roller",
-              "\"roller\": the loaded face slides freely (homogeneous uniaxial stress); \"clamped\": it cannot slide",
+              "Load = stretch: \"roller\": the loaded face slides freely (homogeneous uniaxial stress); \"clamped\": it "
+              "cannot slide",
               choices({"roller", "clamped"}));
     block.set("Distortion", 0.0, "random shift of interior nodes, as a fraction of the smallest edge (0 .. 0.4)",
               between(0.0, 0.4));
@@ -453,11 +461,30 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, const Contac
   }
 }
 
+// The bent block's load line: the nodes in both node sets (the corner of the loaded face in 2D, its
+// lower edge in 3D). Only they are driven: a whole driven face would also be held flat as it
+// turns, a constraint whose energy grows as u^4 and stiffens the strip (6 % at u = L / 100 in
+// plane strain), while a line load only disturbs the field near it.
+void addEdgeSet(Mesh& m, const std::string& name, const std::string& a, const std::string& b) {
+  const auto& na = m.nodeSet(a);
+  const auto& nb = m.nodeSet(b);
+  std::vector<LocalIndex> both;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(both));
+  m.nodeSets[name] = both;
+}
+
 // A rectangle (plane strain, axisymmetry) or box stretched along its last
-// axis by u, on symmetry rollers.
+// axis by u, on symmetry rollers; or bent as a cantilever clamped at x = 0.
 void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
   const auto& b = g.sublist("Block");
   const bool clamped = b.get<std::string>("Loaded Face") == "clamped";
+  const bool bend = b.get<std::string>("Load") == "bend";
+  if (bend && formulation == Formulation::Axisymmetric)
+    throw InputError("Geometry/Block/Load = \"bend\" is a cantilever in plane strain or 3D; in axisymmetry x is the "
+                     "radius (use Problem/Formulation = \"plane strain\" or \"3D\")");
+  if (bend && clamped)
+    throw InputError("Geometry/Block/Loaded Face = \"clamped\" is for Load = \"stretch\"; the bent block is driven "
+                     "at the edge \"tip\" of its free end alone");
   if (formulation == Formulation::ThreeD) {
     BoxSpec spec;
     spec.element = elementOrder(g);
@@ -469,10 +496,17 @@ void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
     spec.nz = b.get<int>("Cells Z");
     spec.tetrahedra = b.get<std::string>("Element") == "tet4";
     s.mesh = std::make_shared<Mesh>(box(spec));
-    s.conditions = {{"xmin", 0, 0.0, 0.0}, {"ymin", 1, 0.0, 0.0}, {"zmin", 2, 0.0, 0.0}, {"zmax", 2, 0.0, 1.0}};
-    if (clamped) s.conditions.insert(s.conditions.end(), {{"zmax", 0, 0.0, 0.0}, {"zmax", 1, 0.0, 0.0}});
-    s.force = {"zmax", 2, 1.0};
-    s.areaFactors = {spec.lx, spec.ly};
+    if (bend) {
+      addEdgeSet(*s.mesh, "tip", "xmax", "zmin");
+      s.conditions = {{"xmin", 0, 0.0, 0.0}, {"xmin", 1, 0.0, 0.0}, {"xmin", 2, 0.0, 0.0}, {"tip", 2, 0.0, 1.0}};
+      s.force = {"tip", 2, 1.0};
+      s.areaFactors = {spec.ly, spec.lz};
+    } else {
+      s.conditions = {{"xmin", 0, 0.0, 0.0}, {"ymin", 1, 0.0, 0.0}, {"zmin", 2, 0.0, 0.0}, {"zmax", 2, 0.0, 1.0}};
+      if (clamped) s.conditions.insert(s.conditions.end(), {{"zmax", 0, 0.0, 0.0}, {"zmax", 1, 0.0, 0.0}});
+      s.force = {"zmax", 2, 1.0};
+      s.areaFactors = {spec.lx, spec.ly};
+    }
   } else {
     RectangleSpec spec;
     spec.element = elementOrder(g);
@@ -481,11 +515,18 @@ void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
     spec.nx = b.get<int>("Cells X");
     spec.ny = b.get<int>("Cells Y");
     s.mesh = std::make_shared<Mesh>(rectangle(spec));
-    s.conditions = {{"left", 0, 0.0, 0.0}, {"bottom", 1, 0.0, 0.0}, {"top", 1, 0.0, 1.0}};
-    if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
-    s.force = {"top", 1, 1.0};
-    s.areaFactors = formulation == Formulation::Axisymmetric ? std::vector<Real>{kPi, spec.lx, spec.lx}
-                                                             : std::vector<Real>{spec.lx};
+    if (bend) {
+      addEdgeSet(*s.mesh, "tip", "right", "bottom");
+      s.conditions = {{"left", 0, 0.0, 0.0}, {"left", 1, 0.0, 0.0}, {"tip", 1, 0.0, 1.0}};
+      s.force = {"tip", 1, 1.0};
+      s.areaFactors = {spec.ly};
+    } else {
+      s.conditions = {{"left", 0, 0.0, 0.0}, {"bottom", 1, 0.0, 0.0}, {"top", 1, 0.0, 1.0}};
+      if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
+      s.force = {"top", 1, 1.0};
+      s.areaFactors = formulation == Formulation::Axisymmetric ? std::vector<Real>{kPi, spec.lx, spec.lx}
+                                                               : std::vector<Real>{spec.lx};
+    }
   }
   if (b.get<double>("Distortion") > 0.0)
     perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));
