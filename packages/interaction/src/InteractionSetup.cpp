@@ -203,7 +203,25 @@ std::vector<ScalarParameter> InteractionSetup::scalarParameters(std::shared_ptr<
            }}};
 }
 
+void InteractionSetup::checkElementOrder(int order, const std::string& where) const {
+  // Quadratic cells have curved facets: Method 3's surface points and closest points, and the
+  // traction results.e shows (either method), stand on straight facets; Method 1's pair list
+  // bounds a cell by its nodes, which a curved cell may leave.
+  if (order == 1) return;
+  std::string linear;
+  for (const CellTypeInfo& row : kCellTypes)
+    if (row.order == 1) linear += (linear.empty() ? "" : ", ") + std::string(row.name);
+  throw InputError("Interaction/Method = \"" + std::string(method == Method::VolumePair ? "volume pair" : "half-space point") +
+                   "\" takes linear cells (" + linear + "), but " + where +
+                   ": the interaction on the curved facets of quadratic cells is not implemented; set "
+                   "Geometry/Element Order = 1 (a body that interacts with nothing, e.g. Geometry/Type = \"block\", "
+                   "takes order 2)");
+}
+
 void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation) const {
+  for (const auto& b : mesh.blocks)
+    checkElementOrder(cellTypeInfo(b.type).order,
+                      "body \"" + b.name + "\" has " + mesh::cellTypeName(b.type) + " cells");
   // Method 1 integrates over the cells the mesh has: a symmetry plane (or, in
   // plane strain, the symmetry line of the built-in half models) would drop
   // the mirror half of every body from the interaction.

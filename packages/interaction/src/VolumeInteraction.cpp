@@ -18,10 +18,11 @@ namespace {
 std::string where() { return "volume pair interaction: "; }
 
 // The cells whose points the quadrature places: those with shape functions, tensor-product cells
-// in 2D and 3D, simplices in 3D (split into four hexahedra; see tetSubHexPoint).
+// in 2D and 3D, simplices in 3D (split into four hexahedra; see tetSubHexPoint); linear ones only
+// (the pair list's bounding boxes are those of the nodes, which a curved cell may leave).
 bool volumeQuadratureTakes(CellType type, int dim) {
   const CellTypeInfo& row = cellTypeInfo(type);
-  return row.dim == dim && (!row.simplex || dim == 3) && row.numNodes <= kMaxVolumeCellNodes &&
+  return row.dim == dim && (!row.simplex || dim == 3) && row.order == 1 && row.numNodes <= kMaxVolumeCellNodes &&
          fem::withElement(type, [](auto) {});
 }
 

@@ -165,7 +165,18 @@ Mesh quarterDisk(const QuarterDiskSpec& s) {
   m.nodeSets["axis"] = axis;
   m.nodeSets["equator"] = equator;
   m.nodeSets["apex"] = {bId[0][nR]};
-  buildSurfaces(m);
+  if (s.element.order != 2) {
+    buildSurfaces(m);
+    return m;
+  }
+  // the node of an edge between two nodes of the arc goes onto the arc (the midpoint, pushed out radially)
+  auto onArc = [&](LocalIndex n) { return std::abs(std::hypot(m.coord(n, 0), m.coord(n, 1) - s.centerY) - R) <= 1e-12 * R; };
+  elevate(m, s.element.serendipity, [&](LocalIndex a, LocalIndex b, Real* x) {
+    if (!onArc(a) || !onArc(b)) return;
+    const Real r = std::hypot(x[0], x[1] - s.centerY);
+    x[0] *= R / r;
+    x[1] = s.centerY + (x[1] - s.centerY) * R / r;
+  });
   return m;
 }
 
@@ -184,6 +195,7 @@ Mesh halfSpaceBlock(const HalfSpaceSpec& s) {
   r.ny = int(ds.size()) - 1;
   r.body = s.body;
   r.name = s.name;
+  r.element = s.element;
   // Piecewise-linear interpolation of the node tables as gradings.
   auto table = [](std::vector<Real> pos, Real length) {
     return [pos, length](Real u) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -25,6 +26,34 @@ namespace {
 void checkCounts(const char* what, std::initializer_list<int> counts) {
   for (int n : counts)
     if (n < 1) throw InputError(std::string(what) + ": cell counts must be >= 1");
+}
+
+// The quadratic row a linear row becomes: of the same shape, the fewest nodes (serendipity) or the most.
+const CellTypeInfo& quadraticRow(const CellTypeInfo& linear, bool serendipity) {
+  const CellTypeInfo* out = nullptr;
+  for (const CellTypeInfo& r : kCellTypes)
+    if (r.order == 2 && r.dim == linear.dim && r.simplex == linear.simplex &&
+        (!out || (serendipity ? r.numNodes < out->numNodes : r.numNodes > out->numNodes)))
+      out = &r;
+  if (linear.order != 1 || !out)
+    throw std::logic_error(std::string("mesh::elevate: ") + linear.name + " cells are not linear ones it can elevate");
+  return *out;
+}
+
+// The local corners of node a of a quadratic row: those of its edge, of its face, or all of the
+// cell's (read from the facets, which list mid-edge nodes and face centres after their corners).
+std::vector<int> cornersOfNode(const CellTypeInfo& row, int a) {
+  const int fc = facetCornerCount(row);
+  for (int f = 0; f < row.numFacets; ++f)
+    for (int p = fc; p < row.nodesPerFacet; ++p)
+      if (row.facets[f][p] == a) {
+        const int k = p - fc;
+        if (k < fc) return {row.facets[f][k], row.facets[f][(k + 1) % fc]};
+        return std::vector<int>(row.facets[f], row.facets[f] + fc);
+      }
+  std::vector<int> all(std::size_t(cornerCount(row)));
+  std::iota(all.begin(), all.end(), 0);
+  return all;
 }
 
 void addNodeSet(Mesh& m, const std::string& name, std::vector<LocalIndex> nodes) {
@@ -64,7 +93,10 @@ Mesh rectangle(const RectangleSpec& s) {
   addNodeSet(m, "right", right);
   addNodeSet(m, "bottom", bottom);
   addNodeSet(m, "top", top);
-  buildSurfaces(m);
+  if (s.element.order == 2)
+    elevate(m, s.element.serendipity);
+  else
+    buildSurfaces(m);
   return m;
 }
 
@@ -119,7 +151,10 @@ Mesh box(const BoxSpec& s) {
       }
   const char* names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
   for (int f = 0; f < 6; ++f) addNodeSet(m, names[f], sets[f]);
-  buildSurfaces(m);
+  if (s.element.order == 2)
+    elevate(m, s.element.serendipity);
+  else
+    buildSurfaces(m);
   return m;
 }
 
@@ -188,6 +223,78 @@ void buildSurfaces(Mesh& mesh) {
     }
     if (s.nodesPerFacet == 0) s.nodesPerFacet = mesh.dim == 2 ? 2 : 3;
   }
+}
+
+void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place) {
+  if (!mesh.nodeIds.empty()) throw std::logic_error("mesh::elevate: a mesh with its own node ids is a distributed part");
+  const int dim = mesh.dim;
+  const LocalIndex firstNew = mesh.numNodes();
+  std::map<std::vector<LocalIndex>, LocalIndex> made;  // sorted corners -> their node
+  std::vector<std::vector<LocalIndex>> cornersOf;      // of each new node, sorted
+  for (auto& b : mesh.blocks) {
+    const CellTypeInfo& linear = cellTypeInfo(b.type);
+    const CellTypeInfo& quadratic = quadraticRow(linear, serendipity);
+    const int nc = linear.numNodes, nq = quadratic.numNodes;
+    std::vector<std::vector<int>> local(static_cast<std::size_t>(nq));
+    for (int a = nc; a < nq; ++a) local[std::size_t(a)] = cornersOfNode(quadratic, a);
+    std::vector<LocalIndex> connectivity;
+    connectivity.reserve(std::size_t(b.numCells()) * nq);
+    for (LocalIndex c = 0; c < b.numCells(); ++c) {
+      const LocalIndex* corners = &b.connectivity[std::size_t(c) * nc];
+      connectivity.insert(connectivity.end(), corners, corners + nc);
+      for (int a = nc; a < nq; ++a) {
+        std::vector<LocalIndex> key;
+        for (int k : local[std::size_t(a)]) key.push_back(corners[k]);
+        std::sort(key.begin(), key.end());
+        auto [it, fresh] = made.try_emplace(key, LocalIndex(firstNew + LocalIndex(cornersOf.size())));
+        if (fresh) cornersOf.push_back(key);
+        connectivity.push_back(it->second);
+      }
+    }
+    b.type = quadratic.type;
+    b.connectivity = std::move(connectivity);
+  }
+  // edge nodes: at the midpoint, or where `place` puts them; the others at their corners' mean
+  mesh.coords.resize(mesh.coords.size() + cornersOf.size() * std::size_t(dim), 0.0);
+  for (std::size_t k = 0; k < cornersOf.size(); ++k) {
+    Real* x = &mesh.coords[(std::size_t(firstNew) + k) * dim];
+    for (LocalIndex corner : cornersOf[k])
+      for (int i = 0; i < dim; ++i) x[i] += mesh.coord(corner, i) / Real(cornersOf[k].size());
+    if (cornersOf[k].size() == 2 && place) place(cornersOf[k][0], cornersOf[k][1], x);
+  }
+  // face and cell nodes: the Coons blend adds 2^(1 - d) times the sum of the moves of the edge
+  // nodes of their d-dimensional face or cell (1/2 for a quadrilateral, 1/4 for a hexahedron)
+  std::vector<char> blended(cornersOf.size(), 0);
+  for (const auto& b : mesh.blocks) {
+    const CellTypeInfo& row = cellTypeInfo(b.type);
+    const int nc = cornerCount(row), nq = row.numNodes;
+    for (LocalIndex c = 0; c < b.numCells(); ++c) {
+      const LocalIndex* nodes = &b.connectivity[std::size_t(c) * nq];
+      for (int a = nc; a < nq; ++a) {
+        const std::size_t k = std::size_t(nodes[a] - firstNew);
+        if (cornersOf[k].size() == 2 || blended[k]) continue;
+        blended[k] = 1;
+        const Real weight = cornersOf[k].size() == 4 ? 0.5 : 0.25;
+        for (int e = nc; e < nq; ++e) {
+          const auto& edge = cornersOf[std::size_t(nodes[e] - firstNew)];
+          if (edge.size() != 2 || !std::includes(cornersOf[k].begin(), cornersOf[k].end(), edge.begin(), edge.end()))
+            continue;
+          for (int i = 0; i < dim; ++i)
+            mesh.coords[std::size_t(nodes[a]) * dim + i] +=
+                weight * (mesh.coord(nodes[e], i) - 0.5 * (mesh.coord(edge[0], i) + mesh.coord(edge[1], i)));
+        }
+      }
+    }
+  }
+  for (auto& [name, nodes] : mesh.nodeSets) {
+    const std::size_t count = nodes.size();
+    for (std::size_t k = 0; k < cornersOf.size(); ++k)
+      if (std::all_of(cornersOf[k].begin(), cornersOf[k].end(),
+                      [&](LocalIndex n) { return std::binary_search(nodes.begin(), nodes.begin() + count, n); }))
+        nodes.push_back(LocalIndex(firstNew + LocalIndex(k)));
+    std::sort(nodes.begin(), nodes.end());
+  }
+  buildSurfaces(mesh);
 }
 
 void removeFacetsOn(Mesh& mesh, int body, const std::vector<LocalIndex>& nodes) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 #include "cgcm/core/Error.hpp"
@@ -146,6 +147,17 @@ Teuchos::RCP<const ParameterList> validParameters() {
                      "Type = gmsh: values for DefineConstant[] numbers of the .geo, e.g. level = 1 "
                      "(gmsh -setnumber)")
         .disableRecursiveValidation();
+    g->set("Element Order", 1,
+           "1: linear cells (QUAD4; HEX8, TETRA4), or 2: quadratic cells with mid-edge nodes, QUAD9 (QUAD8 with "
+           "Serendipity), HEX27 (HEX20), TETRA10, whose edges and faces follow curved boundaries: the sphere's "
+           "arc of the built-in geometries; a .geo's curves and surfaces (gmsh's Mesh.ElementOrder). A .msh file "
+           "is read as it is and its cells must have this order. The interaction (Method 3 and Method 1) takes "
+           "linear cells only",
+           intBetween(1, 2));
+    g->set("Serendipity", false,
+           "Element Order = 2: quadrilaterals and hexahedra without their face and volume centre nodes, QUAD8 "
+           "and HEX20 (a .geo: gmsh's Mesh.SecondOrderIncomplete = 1; a .msh must hold them), instead of the "
+           "complete QUAD9 and HEX27; tetrahedra are TETRA10 either way");
     g->set("Sphere Radius", 1.0,
                  "radius R0 of the upper sphere: the reference length (with a gmsh mesh: R0 of gammaL = R0/r0 and of "
                  "the force unit)",
@@ -170,9 +182,19 @@ Teuchos::RCP<const ParameterList> validParameters() {
     block.set("Cells X", 4, "cells along x", intAtLeast(1));
     block.set("Cells Y", 4, "cells along y", intAtLeast(1));
     block.set("Cells Z", 4, "cells along z (3D)", intAtLeast(1));
-    block.set("Element", "hex8", "3D cell type: \"hex8\" or \"tet4\" (6 per hexahedron)", choices({"hex8", "tet4"}));
+    block.set("Element", "hex8",
+              "3D cell shape: \"hex8\" or \"tet4\" (6 per hexahedron); with Geometry/Element Order = 2 they are "
+              "HEX27 (HEX20 with Serendipity) and TETRA10",
+              choices({"hex8", "tet4"}));
+    block.set("Load", "stretch",
+              "\"stretch\": the face at the far end of the last axis moves by u along that axis, on symmetry rollers; "
+              "\"bend\": a cantilever (plane strain or 3D): the face x = 0 clamped, the lower edge of the face x = "
+              "Length X (node set \"tip\": the corner (Length X, 0) in 2D, the line x = Length X, z = 0 in 3D) moves "
+              "by u along the last axis (y in 2D, z in 3D), the rest is free; P is the tip force along that axis",
+              choices({"stretch", "bend"}));
     block.set("Loaded Face", "roller",
-              "\"roller\": the loaded face slides freely (homogeneous uniaxial stress); \"clamped\": it cannot slide",
+              "Load = stretch: \"roller\": the loaded face slides freely (homogeneous uniaxial stress); \"clamped\": it "
+              "cannot slide",
               choices({"roller", "clamped"}));
     block.set("Distortion", 0.0, "random shift of interior nodes, as a fraction of the smallest edge (0 .. 0.4)",
               between(0.0, 0.4));
@@ -185,6 +207,14 @@ Teuchos::RCP<const ParameterList> validParameters() {
 Real reducedRadius(const ParameterList& g) {
   const Real R0 = g.get<double>("Sphere Radius"), R2 = g.get<double>("Second Sphere Radius");
   return g.get<std::string>("Type") == "sphere on sphere" ? R0 * R2 / (R0 + R2) : R0;
+}
+
+ElementOrder elementOrder(const ParameterList& g) {
+  ElementOrder e{g.get<int>("Element Order"), g.get<bool>("Serendipity")};
+  if (e.serendipity && e.order != 2)
+    throw InputError("Geometry/Serendipity = true needs Geometry/Element Order = 2 (it is " + std::to_string(e.order) +
+                     "); serendipity cells are quadratic");
+  return e;
 }
 
 namespace {
@@ -212,6 +242,22 @@ void reportWholeBody(Model& s, Formulation formulation, const std::string& mirro
   if (s.balance) s.balance->scale = s.force.scale;
 }
 
+// The cells of a mesh read from a file against Element Order and Serendipity: a clear error naming both.
+void checkElementOrder(const Mesh& m, const ElementOrder& wanted, const std::string& file) {
+  for (const auto& b : m.blocks) {
+    const CellTypeInfo& row = cellTypeInfo(b.type);
+    const bool serendipity = row.order == 2 && !row.simplex && row.numNodes < (row.dim == 2 ? 9 : 27);
+    const std::string has = "mesh file \"" + file + "\": body \"" + b.name + "\" has " + row.name +
+                            " cells (order " + std::to_string(row.order) + (serendipity ? ", serendipity" : "") + ")";
+    if (row.order != wanted.order)
+      throw InputError(has + ", but Geometry/Element Order = " + std::to_string(wanted.order) +
+                       "; set it to " + std::to_string(row.order) + " or mesh the file again");
+    if (row.order == 2 && !row.simplex && serendipity != wanted.serendipity)
+      throw InputError(has + ", but Geometry/Serendipity = " + (wanted.serendipity ? "true" : "false") + "; set it to " +
+                       (serendipity ? "true" : "false") + " or mesh the file again");
+  }
+}
+
 // Sphere (radius R0, apex at the equilibrium gap above y = 0) over a half-space
 // block or a second sphere; u moves the sphere's equator plane down.
 void buildSphereContact(const ParameterList& g, Formulation formulation, const ContactDistance& contactDistance,
@@ -228,6 +274,7 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, const C
   sphere.radius = R0;
   sphere.centerY = R0 + rS0;
   sphere.refinement = level;
+  sphere.element = elementOrder(g);
   const Real zone = g.get<double>("Contact Zone Size");
   sphere.fineAngle = 0.8 * zone;  // the fine cells of both bodies are then equally long
   sphere.name = "sphere";
@@ -240,6 +287,7 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, const C
     lower.centerY = -R2;
     lower.lowerHalf = false;
     lower.refinement = level;
+    lower.element = sphere.element;
     lower.fineAngle = std::min(0.8 * zone * R0 / R2, 0.69);
     lower.name = "second sphere";
     mesh::append(*m, mesh::quarterDisk(lower), "lower ");
@@ -248,6 +296,7 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, const C
     h.width = h.depth = g.get<double>("Half-Space Size") * R0;
     h.fineLength = zone * R0;
     h.refinement = level;
+    h.element = sphere.element;
     mesh::Mesh block = mesh::halfSpaceBlock(h);
     block.nodeSets["equator"] = block.nodeSets.at("bottom");  // the fixed far side
     mesh::append(*m, block, "lower ");
@@ -323,7 +372,10 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, const Contac
   mesh::GmshOptions options;
   options.dim = formulationDim(formulation);
   if (g.isSublist("Mesh Numbers")) options.numbers = meshNumbers(g.sublist("Mesh Numbers"));
+  const ElementOrder element = elementOrder(g);
+  options.element = element;
   auto m = std::make_shared<mesh::Mesh>(mesh::readGmsh(file, options));
+  checkElementOrder(*m, element, file);
   const auto fail = [&](const std::string& what) { throw InputError("mesh file \"" + file + "\": " + what); };
   std::string mirrored;
   for (const std::string& plane : g.get<Teuchos::Array<std::string>>("Mirror Planes")) {
@@ -409,13 +461,33 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, const Contac
   }
 }
 
+// The bent block's load line: the nodes in both node sets (the corner of the loaded face in 2D, its
+// lower edge in 3D). Only they are driven: a whole driven face would also be held flat as it
+// turns, a constraint whose energy grows as u^4 and stiffens the strip (6 % at u = L / 100 in
+// plane strain), while a line load only disturbs the field near it.
+void addEdgeSet(Mesh& m, const std::string& name, const std::string& a, const std::string& b) {
+  const auto& na = m.nodeSet(a);
+  const auto& nb = m.nodeSet(b);
+  std::vector<LocalIndex> both;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(both));
+  m.nodeSets[name] = both;
+}
+
 // A rectangle (plane strain, axisymmetry) or box stretched along its last
-// axis by u, on symmetry rollers.
+// axis by u, on symmetry rollers; or bent as a cantilever clamped at x = 0.
 void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
   const auto& b = g.sublist("Block");
   const bool clamped = b.get<std::string>("Loaded Face") == "clamped";
+  const bool bend = b.get<std::string>("Load") == "bend";
+  if (bend && formulation == Formulation::Axisymmetric)
+    throw InputError("Geometry/Block/Load = \"bend\" is a cantilever in plane strain or 3D; in axisymmetry x is the "
+                     "radius (use Problem/Formulation = \"plane strain\" or \"3D\")");
+  if (bend && clamped)
+    throw InputError("Geometry/Block/Loaded Face = \"clamped\" is for Load = \"stretch\"; the bent block is driven "
+                     "at the edge \"tip\" of its free end alone");
   if (formulation == Formulation::ThreeD) {
     BoxSpec spec;
+    spec.element = elementOrder(g);
     spec.lx = b.get<double>("Length X");
     spec.ly = b.get<double>("Length Y");
     spec.lz = b.get<double>("Length Z");
@@ -424,22 +496,37 @@ void buildBlock(const ParameterList& g, Formulation formulation, Model& s) {
     spec.nz = b.get<int>("Cells Z");
     spec.tetrahedra = b.get<std::string>("Element") == "tet4";
     s.mesh = std::make_shared<Mesh>(box(spec));
-    s.conditions = {{"xmin", 0, 0.0, 0.0}, {"ymin", 1, 0.0, 0.0}, {"zmin", 2, 0.0, 0.0}, {"zmax", 2, 0.0, 1.0}};
-    if (clamped) s.conditions.insert(s.conditions.end(), {{"zmax", 0, 0.0, 0.0}, {"zmax", 1, 0.0, 0.0}});
-    s.force = {"zmax", 2, 1.0};
-    s.areaFactors = {spec.lx, spec.ly};
+    if (bend) {
+      addEdgeSet(*s.mesh, "tip", "xmax", "zmin");
+      s.conditions = {{"xmin", 0, 0.0, 0.0}, {"xmin", 1, 0.0, 0.0}, {"xmin", 2, 0.0, 0.0}, {"tip", 2, 0.0, 1.0}};
+      s.force = {"tip", 2, 1.0};
+      s.areaFactors = {spec.ly, spec.lz};
+    } else {
+      s.conditions = {{"xmin", 0, 0.0, 0.0}, {"ymin", 1, 0.0, 0.0}, {"zmin", 2, 0.0, 0.0}, {"zmax", 2, 0.0, 1.0}};
+      if (clamped) s.conditions.insert(s.conditions.end(), {{"zmax", 0, 0.0, 0.0}, {"zmax", 1, 0.0, 0.0}});
+      s.force = {"zmax", 2, 1.0};
+      s.areaFactors = {spec.lx, spec.ly};
+    }
   } else {
     RectangleSpec spec;
+    spec.element = elementOrder(g);
     spec.lx = b.get<double>("Length X");
     spec.ly = b.get<double>("Length Y");
     spec.nx = b.get<int>("Cells X");
     spec.ny = b.get<int>("Cells Y");
     s.mesh = std::make_shared<Mesh>(rectangle(spec));
-    s.conditions = {{"left", 0, 0.0, 0.0}, {"bottom", 1, 0.0, 0.0}, {"top", 1, 0.0, 1.0}};
-    if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
-    s.force = {"top", 1, 1.0};
-    s.areaFactors = formulation == Formulation::Axisymmetric ? std::vector<Real>{kPi, spec.lx, spec.lx}
-                                                             : std::vector<Real>{spec.lx};
+    if (bend) {
+      addEdgeSet(*s.mesh, "tip", "right", "bottom");
+      s.conditions = {{"left", 0, 0.0, 0.0}, {"left", 1, 0.0, 0.0}, {"tip", 1, 0.0, 1.0}};
+      s.force = {"tip", 1, 1.0};
+      s.areaFactors = {spec.ly};
+    } else {
+      s.conditions = {{"left", 0, 0.0, 0.0}, {"bottom", 1, 0.0, 0.0}, {"top", 1, 0.0, 1.0}};
+      if (clamped) s.conditions.push_back({"top", 0, 0.0, 0.0});
+      s.force = {"top", 1, 1.0};
+      s.areaFactors = formulation == Formulation::Axisymmetric ? std::vector<Real>{kPi, spec.lx, spec.lx}
+                                                               : std::vector<Real>{spec.lx};
+    }
   }
   if (b.get<double>("Distortion") > 0.0)
     perturbInteriorNodes(*s.mesh, b.get<double>("Distortion"), unsigned(b.get<int>("Distortion Seed")));

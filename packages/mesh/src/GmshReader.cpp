@@ -12,7 +12,9 @@
 #include <mutex>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
+#include <vector>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/Generators.hpp"
@@ -128,15 +130,32 @@ bool cellTypeOf(int gmshType, int dim, CellType& type) {
   return false;
 }
 
+// "A", "A and B", "A, B and C".
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return out;
+}
+
 // The gmsh names of the cell types of dimension `dim`, for messages: "A" and "B".
 std::string supportedGmshTypes(int dim) {
   std::vector<std::string> names;
   for (const CellTypeInfo& row : kCellTypes)
     if (row.dim == dim) names.push_back(std::string("\"") + row.gmshName + "\"");
-  std::string out;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
-  return out;
+  return joined(names);
+}
+
+// The gmsh names of the element types allowed in boundary groups of dimension `dim`, for messages.
+std::string supportedBoundaryTypes(int dim) {
+  std::vector<std::string> names;
+  if (dim == 0) names.push_back("\"" + elementTypeName(15) + "\"");
+  for (const CellTypeInfo& row : kCellTypes) {
+    const std::string name = "\"" + elementTypeName(row.gmshFacetType) + "\"";
+    if (dim > 0 && row.dim == dim + 1 && std::find(names.begin(), names.end(), name) == names.end())
+      names.push_back(name);
+  }
+  return joined(names);
 }
 
 // Element types allowed in lower-dimensional groups: points, and the facets of the cell types.
@@ -383,7 +402,7 @@ class Extractor {
         for (std::size_t t = 0; t < types.size(); ++t) {
           if (!boundaryTypeAllowed(types[t], g.dim))
             fail("physical group " + inQuotes(g.name) + " has elements of type " + inQuotes(elementTypeName(types[t])) +
-                 "; supported on boundaries are points, \"Line 2\", \"Triangle 3\" and \"Quadrilateral 4\"");
+                 "; supported on " + std::to_string(g.dim) + "D boundary groups are " + supportedBoundaryTypes(g.dim));
           if (contactBody < 0) continue;
           const std::size_t npe = nodeTags[t].size() / elementTags[t].size();
           for (std::size_t k = 0; k < elementTags[t].size(); ++k) {
@@ -451,6 +470,8 @@ class Extractor {
 Mesh readGmsh(const std::string& path, const GmshOptions& options) {
   if (options.dim != 2 && options.dim != 3)
     throw InputError("readGmsh: the mesh dimension must be 2 or 3, got " + std::to_string(options.dim));
+  if (options.element.order != 1 && options.element.order != 2)
+    throw InputError("readGmsh: the element order must be 1 or 2, got " + std::to_string(options.element.order));
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
     throw InputError("mesh file " + inQuotes(path) + " does not exist or is not a file");
@@ -471,7 +492,13 @@ Mesh readGmsh(const std::string& path, const GmshOptions& options) {
       gmsh::merge(overrides.path);
     }
     gmsh::merge(path);
-    if (geo) gmsh::model::mesh::generate(options.dim);
+    if (geo) {
+      // the deck's cells over any the file sets; quadratic: the nodes on the curved geometry
+      gmsh::option::setNumber("Mesh.ElementOrder", options.element.order);
+      gmsh::option::setNumber("Mesh.SecondOrderIncomplete", options.element.serendipity ? 1 : 0);
+      gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);
+      gmsh::model::mesh::generate(options.dim);
+    }
     return Extractor(path, options.dim).run();
   } catch (const InputError&) {
     throw;

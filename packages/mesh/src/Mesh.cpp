@@ -1,5 +1,8 @@
 #include "cgcm/mesh/Mesh.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "cgcm/core/Error.hpp"
 
 namespace cgcm::mesh {
@@ -14,6 +17,13 @@ const std::vector<std::vector<int>>& localFacets(CellType type) {
     return out;
   }();
   return all[static_cast<std::size_t>(type)];
+}
+
+const CellTypeInfo& rowWithFacets(int dim, int nodesPerFacet) {
+  for (const CellTypeInfo& row : kCellTypes)
+    if (row.dim == dim && row.nodesPerFacet == nodesPerFacet) return row;
+  throw std::logic_error("mesh::rowWithFacets: no cell type of dimension " + std::to_string(dim) + " has facets of " +
+                         std::to_string(nodesPerFacet) + " nodes");
 }
 
 std::vector<std::string> bodyNames(const Mesh& mesh) {

@@ -9,19 +9,6 @@
 
 namespace cgcm::mesh {
 
-namespace {
-
-// Node order of a reflected facet of `nodes` nodes that keeps its orientation
-// (the facets of the cell types of dimension dim).
-const int* reflectedFacetOrder(int nodes, int dim) {
-  for (const CellTypeInfo& row : kCellTypes)
-    if (row.dim == dim && row.nodesPerFacet == nodes) return row.reflectedFacet;
-  throw std::logic_error("mesh::mirror: no cell type of dimension " + std::to_string(dim) + " has facets of " +
-                         std::to_string(nodes) + " nodes");
-}
-
-}  // namespace
-
 void mirror(Mesh& mesh, int axis, Real tolerance) {
   if (axis < 0 || axis >= mesh.dim) throw InputError("mirror plane axis out of range");
   if (!mesh.nodeIds.empty()) throw std::logic_error("mesh::mirror: a mesh with its own node ids is a distributed part");
@@ -99,7 +86,7 @@ void mirror(Mesh& mesh, int axis, Real tolerance) {
     dst.nodesPerFacet = src.nodesPerFacet;
     const int npf = src.nodesPerFacet;
     if (npf == 0 || src.facets.empty()) continue;
-    const int* order = reflectedFacetOrder(npf, mesh.dim);
+    const int* order = rowWithFacets(mesh.dim, npf).reflectedFacet;
     for (LocalIndex f = 0; f < src.numFacets(); ++f) {
       const LocalIndex* nodes = &src.facets[std::size_t(f) * npf];
       bool inPlane = true;

@@ -32,11 +32,14 @@ struct Box {
   }
 };
 
-// A shape to test: the nodes of a cell, or of a boundary facet, with its box and size.
+// A shape to test: the nodes of a cell, or of a boundary facet, with its box and size. The tests
+// take a quadratic cell or facet as the straight one of its corners.
 struct Shape {
   int body;
   std::vector<Vec> points;
+  int corners = 0;  ///< the first points: the facet's corners (facets)
   const std::vector<std::vector<int>>* facets = nullptr;  ///< cells: local facets, oriented outward
+  int facetCorners = 0;  ///< cells: the corners of each facet (its first nodes)
   Box box;
   Real size = 0.0;  ///< longest extent of the box
 };
@@ -101,7 +104,7 @@ Vec normal(const Vec& a, const Vec& b, const Vec& c, int dim) {
 bool inside(const Shape& cell, const Vec& p, int dim, Real tol) {
   for (const auto& f : *cell.facets) {
     std::vector<Vec> pts;
-    for (int a : f) pts.push_back(cell.points[a]);
+    for (int a = 0; a < cell.facetCorners; ++a) pts.push_back(cell.points[f[a]]);
     for (const auto& t : fan(pts.size(), dim)) {
       const Vec n = normal(pts[t[0]], pts[t[1]], pts[t[2]], dim);
       if (dot(n, sub(p, pts[t[0]])) > -tol * norm(n)) return false;
@@ -166,6 +169,7 @@ std::string findBodyOverlap(const Mesh& mesh) {
       const LocalIndex* nodes = &b.connectivity[std::size_t(c) * npc];
       cells.push_back(shape(b.body, nodes, npc));
       cells.back().facets = &localFacets(b.type);
+      cells.back().facetCorners = facetCornerCount(cellTypeInfo(b.type));
       for (int a = 0; a < npc; ++a) nodeBody[nodes[a]] = b.body;
       bodyBox[b.body].add(cells.back().box.lo), bodyBox[b.body].add(cells.back().box.hi);
     }
@@ -173,8 +177,10 @@ std::string findBodyOverlap(const Mesh& mesh) {
   Mesh boundary = mesh;  // every exterior facet, not only the interacting ones
   buildSurfaces(boundary);
   for (const auto& s : boundary.surfaces)
-    for (LocalIndex f = 0; f < s.numFacets(); ++f)
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
       facets.push_back(shape(s.body, &s.facets[std::size_t(f) * s.nodesPerFacet], s.nodesPerFacet));
+      facets.back().corners = facetCornerCount(rowWithFacets(dim, s.nodesPerFacet));
+    }
 
   Box all;
   for (const auto& b : bodyBox) all.add(b.lo), all.add(b.hi);
@@ -199,7 +205,7 @@ std::string findBodyOverlap(const Mesh& mesh) {
     if (!found.empty()) return found;
   }
   for (const auto& f : facets) {
-    const std::size_t np = f.points.size();
+    const std::size_t np = std::size_t(f.corners);
     for (std::size_t e = 0; e < (dim == 2 ? 1 : np); ++e) {
       const Vec& p = f.points[e];
       const Vec& q = f.points[(e + 1) % np];
@@ -209,7 +215,7 @@ std::string findBodyOverlap(const Mesh& mesh) {
       facetGrid.any(box, [&](std::size_t k) {
         const Shape& g = facets[k];
         if (g.body == f.body) return false;
-        for (const auto& t : fan(g.points.size(), dim))
+        for (const auto& t : fan(std::size_t(g.corners), dim))
           if (crosses(p, q, g.points[t[0]], g.points[t[1]], g.points[t[2]], dim, relTol * std::max(f.size, g.size))) {
             found = "the boundaries of " + body(f.body) + " and " + body(g.body) + " cross near " + at(p, dim);
             return true;

@@ -178,6 +178,79 @@ TEST(CellTypeTable, TheLinearRowsAreTheExodusOnes) {
   EXPECT_EQ(std::string(cellTypeInfo(CellType::Tet4).name), "TETRA4");
 }
 
+// A facet's nodes after its corners sit where its own element (Line3, Tri6, Quad8, Quad9) has
+// them: mid-edge node k halfway between corners k and k + 1, the face centre at the corners'
+// mean. Checked on the parent cell, where every facet is flat.
+TEST(CellTypeTable, FacetNodesFollowTheirCornersAsInTheFacetElement) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    const auto x = parentNodes(row.type);
+    const int corners = facetCornerCount(row);
+    for (int f = 0; f < row.numFacets; ++f) {
+      const int* n = row.facets[f];
+      for (int a = 0; a < corners; ++a) EXPECT_LT(n[a], cornerCount(row)) << "facet " << f << " corner " << a;
+      for (int a = corners; a < row.nodesPerFacet; ++a) {
+        Point want{0.0, 0.0, 0.0};
+        const int k = a - corners;
+        if (k < corners) {
+          for (int i = 0; i < 3; ++i) want[i] = 0.5 * (x[n[k]][i] + x[n[(k + 1) % corners]][i]);
+        } else {
+          for (int c = 0; c < corners; ++c)
+            for (int i = 0; i < 3; ++i) want[i] += x[n[c]][i] / corners;
+        }
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(x[n[a]][i], want[i]) << "facet " << f << " node " << a;
+      }
+    }
+  }
+}
+
+// The reflected order relabels the whole mirror image, mid-edge and centre nodes included:
+// every node of the reordered image sits where the affine map of its corners puts the node
+// of the parent cell (the parent cell and its mirror image are affine images of each other).
+TEST(CellTypeTable, ReflectionRelabelsEveryNode) {
+  for (const CellTypeInfo& row : kCellTypes) {
+    SCOPED_TRACE(row.name);
+    const auto x = parentNodes(row.type);
+    std::vector<Point> image(x.size());
+    for (int a = 0; a < row.numNodes; ++a) {
+      const Point& p = x[row.reflected[a]];
+      image[a] = {-p[0], p[1], p[2]};
+    }
+    // the affine map xi -> image from corner c0 and its edge neighbours c1 .. c_dim
+    const int* c = row.corners[0];
+    for (int a = 0; a < row.numNodes; ++a) {
+      // xi_a - xi_c0 in the basis of the edges from c0 (they are orthogonal, or the unit simplex's axes)
+      Point want = image[c[0]];
+      for (int e = 1; e <= row.dim; ++e) {
+        const Point edge = minus(x[c[e]], x[c[0]]);
+        const Real t = dot(minus(x[a], x[c[0]]), edge) / dot(edge, edge);
+        const Point imageEdge = minus(image[c[e]], image[c[0]]);
+        for (int i = 0; i < 3; ++i) want[i] += t * imageEdge[i];
+      }
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(image[a][i], want[i], 1e-14) << "node " << a;
+    }
+    // facets: the reflected order relabels the image of facet 0 as a facet element again
+    const int* n = row.facets[0];
+    const int corners = facetCornerCount(row);
+    std::vector<Point> facetImage;
+    for (int a = 0; a < row.nodesPerFacet; ++a) {
+      const Point& p = x[n[row.reflectedFacet[a]]];
+      facetImage.push_back({-p[0], p[1], p[2]});
+    }
+    for (int a = corners; a < row.nodesPerFacet; ++a) {
+      Point want{0.0, 0.0, 0.0};
+      const int k = a - corners;
+      if (k < corners) {
+        for (int i = 0; i < 3; ++i) want[i] = 0.5 * (facetImage[k][i] + facetImage[(k + 1) % corners][i]);
+      } else {
+        for (int b = 0; b < corners; ++b)
+          for (int i = 0; i < 3; ++i) want[i] += facetImage[b][i] / corners;
+      }
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(facetImage[a][i], want[i]) << "reflected facet node " << a;
+    }
+  }
+}
+
 TEST(CellTypeTable, GmshOrderIsAPermutation) {
   for (const CellTypeInfo& row : kCellTypes) {
     SCOPED_TRACE(row.name);
@@ -211,6 +284,9 @@ TEST(SolidKernelDispatch, PicksTheKernelOfTheFormulationAndCell) {
   EXPECT_EQ(seen(Formulation::ThreeD, CellType::Quad4).numNodes, -1);
   EXPECT_EQ(seen(Formulation::PlaneStrain, CellType::Hex8).numNodes, -1);
   EXPECT_EQ(seen(Formulation::Axisymmetric, CellType::Tet4).numNodes, -1);
-  EXPECT_EQ(fem::cellTypesTakenBy(Formulation::PlaneStrain), "QUAD4");
-  EXPECT_EQ(fem::cellTypesTakenBy(Formulation::ThreeD), "HEX8, TETRA4");
+  EXPECT_EQ(seen(Formulation::PlaneStrain, CellType::Quad9).numNodes, 9);
+  EXPECT_EQ(seen(Formulation::ThreeD, CellType::Hex27).numNodes, 27);
+  EXPECT_EQ(seen(Formulation::ThreeD, CellType::Tet10).numNodes, 10);
+  EXPECT_EQ(fem::cellTypesTakenBy(Formulation::PlaneStrain), "QUAD4, QUAD8, QUAD9");
+  EXPECT_EQ(fem::cellTypesTakenBy(Formulation::ThreeD), "HEX8, TETRA4, TETRA10, HEX20, HEX27");
 }

@@ -55,6 +55,27 @@ mesh::Mesh hexAndTets() {
   return m;
 }
 
+// The same with quadratic cells: QUAD9 and QUAD8 bodies; HEX27, HEX20 and TETRA10 boxes.
+mesh::Mesh quadraticRectangles() {
+  mesh::RectangleSpec a, b;
+  a.nx = 3, a.ny = 2, a.name = "lower", a.element = {2, false};
+  b.nx = 2, b.ny = 2, b.y0 = 1.5, b.name = "upper", b.element = {2, true};
+  mesh::Mesh m = mesh::rectangle(a);
+  mesh::append(m, mesh::rectangle(b), "upper ");
+  return m;
+}
+
+mesh::Mesh quadraticBoxes() {
+  mesh::BoxSpec h, s, t;
+  h.nx = 2, h.ny = 2, h.nz = 1, h.name = "hex27", h.element = {2, false};
+  s.x0 = 2.0, s.name = "hex20", s.element = {2, true};
+  t.x0 = 4.0, t.tetrahedra = true, t.name = "tet10", t.element = {2, false};
+  mesh::Mesh m = mesh::box(h);
+  mesh::append(m, mesh::box(s), "hex20 ");
+  mesh::append(m, mesh::box(t), "tet10 ");
+  return m;
+}
+
 ExodusVariables variablesFor(int dim) {
   ExodusVariables v;
   for (int i = 0; i < dim; ++i) v.nodal.push_back(std::string("displacement_") + "xyz"[i]);
@@ -89,6 +110,19 @@ std::vector<std::vector<int>> exodusSides(const std::string& type) {
   if (type == "QUAD4") return {{1, 2}, {2, 3}, {3, 4}, {4, 1}};
   if (type == "HEX8") return {{1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {1, 5, 8, 4}, {1, 4, 3, 2}, {5, 6, 7, 8}};
   if (type == "TETRA4") return {{1, 2, 4}, {2, 3, 4}, {1, 4, 3}, {1, 3, 2}};
+  if (type == "QUAD8" || type == "QUAD9") return {{1, 2, 5}, {2, 3, 6}, {3, 4, 7}, {4, 1, 8}};
+  if (type == "TETRA10")
+    return {{1, 2, 4, 5, 9, 8}, {2, 3, 4, 6, 10, 9}, {1, 4, 3, 8, 10, 7}, {1, 3, 2, 7, 6, 5}};
+  if (type == "HEX20" || type == "HEX27") {
+    std::vector<std::vector<int>> sides = {{1, 2, 6, 5, 9, 14, 17, 13},  {2, 3, 7, 6, 10, 15, 18, 14},
+                                           {3, 4, 8, 7, 11, 16, 19, 15}, {1, 5, 8, 4, 13, 20, 16, 12},
+                                           {1, 4, 3, 2, 12, 11, 10, 9},  {5, 6, 7, 8, 17, 18, 19, 20}};
+    if (type == "HEX27") {  // the face centres 21-26 (0-based) of sides 5, 6, 4, 2, 1, 3
+      const int centre[6] = {26, 25, 27, 24, 22, 23};
+      for (int k = 0; k < 6; ++k) sides[k].push_back(centre[k]);
+    }
+    return sides;
+  }
   ADD_FAILURE() << "unexpected element type " << type;
   return {};
 }
@@ -234,9 +268,10 @@ void checkFile(const std::string& path, const mesh::Mesh& m, const ExodusVariabl
 }
 
 TEST_F(Exodus, RoundTripOf2DAnd3DMeshes) {
-  for (const mesh::Mesh& m : {twoRectangles(), hexAndTets()}) {
+  int k = 0;
+  for (const mesh::Mesh& m : {twoRectangles(), hexAndTets(), quadraticRectangles(), quadraticBoxes()}) {
     const ExodusVariables v = variablesFor(m.dim);
-    const std::string path = file("round-trip-" + std::to_string(m.dim) + "d.e");
+    const std::string path = file("round-trip-" + std::to_string(k++) + ".e");
     std::vector<StepValues> steps = {valuesAt(1, m, v), valuesAt(2, m, v)};
     {
       ExodusWriter w(path, "round trip", m, v);

@@ -65,6 +65,82 @@ TEST(Geometry, ABlockIsStretchedOnRollersAndDoesNotInteract) {
   EXPECT_EQ(modelOf(g, Formulation::ThreeD).conditions.size(), 6u);
 }
 
+std::string inputErrorOf(Teuchos::ParameterList g, Formulation f) {
+  try {
+    modelOf(g, f);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+TEST(Geometry, ABentBlockIsACantileverDrivenAtItsTipEdge) {
+  Teuchos::ParameterList g;
+  g.set("Type", std::string("block"));
+  auto& b = g.sublist("Block");
+  b.set("Load", std::string("bend"));
+  b.set("Length X", 10.0);
+  b.set("Cells X", 5);
+  b.set("Cells Y", 2);
+  b.set("Cells Z", 2);
+  for (const Formulation f : {Formulation::PlaneStrain, Formulation::ThreeD})
+    for (int order : {1, 2}) {
+      SCOPED_TRACE(std::string(formulationName(f)) + " order " + std::to_string(order));
+      g.set("Element Order", order);
+      const Model m = modelOf(g, f);
+      EXPECT_FALSE(m.interacting);
+      const int last = f == Formulation::ThreeD ? 2 : 1;
+      EXPECT_EQ(m.force.nodeSet, "tip");
+      EXPECT_EQ(m.force.component, last);
+      // the clamp: every component of x = 0; the drive: the tip edge across the strip
+      int clamped = 0, driven = 0;
+      for (const auto& c : m.conditions) {
+        if (c.nodeSet == (f == Formulation::ThreeD ? "xmin" : "left") && c.scale == 0.0) ++clamped;
+        if (c.nodeSet == "tip" && c.component == last && c.scale == 1.0) ++driven;
+      }
+      EXPECT_EQ(clamped, m.mesh->dim);
+      EXPECT_EQ(driven, 1);
+      EXPECT_EQ(m.conditions.size(), std::size_t(m.mesh->dim + 1));
+      const auto& tip = m.mesh->nodeSet("tip");
+      // 2D: the corner (Lx, 0); 3D: the edge x = Lx, z = 0 with 2 cells across (3 nodes, 5 at order 2)
+      EXPECT_EQ(tip.size(), f == Formulation::ThreeD ? std::size_t(order == 1 ? 3 : 5) : 1u);
+      for (LocalIndex n : tip) {
+        EXPECT_EQ(m.mesh->coord(n, 0), 10.0);
+        EXPECT_EQ(m.mesh->coord(n, last), 0.0);
+      }
+      EXPECT_EQ(cellTypeInfo(m.mesh->blocks[0].type).order, order);
+    }
+  EXPECT_NE(inputErrorOf(g, Formulation::Axisymmetric).find("Load = \"bend\" is a cantilever in plane strain or 3D"),
+            std::string::npos);
+  b.set("Loaded Face", std::string("clamped"));
+  EXPECT_NE(inputErrorOf(g, Formulation::PlaneStrain).find("Loaded Face = \"clamped\" is for Load = \"stretch\""),
+            std::string::npos);
+}
+
+TEST(Geometry, ElementOrderMakesQuadraticCellsOfEveryBuiltInGeometry) {
+  for (const Formulation f : {Formulation::Axisymmetric, Formulation::PlaneStrain}) {
+    Teuchos::ParameterList g;
+    g.set("Element Order", 2);
+    const Model m = modelOf(g, f);
+    for (const auto& b : m.mesh->blocks) EXPECT_EQ(b.type, CellType::Quad9) << b.name;
+    EXPECT_EQ(m.mesh->surfaces[0].nodesPerFacet, 3);
+    g.set("Serendipity", true);
+    for (const auto& b : modelOf(g, f).mesh->blocks) EXPECT_EQ(b.type, CellType::Quad8) << b.name;
+  }
+  Teuchos::ParameterList g;
+  g.set("Type", std::string("block"));
+  g.set("Element Order", 2);
+  EXPECT_EQ(modelOf(g, Formulation::ThreeD).mesh->blocks[0].type, CellType::Hex27);
+  g.sublist("Block").set("Element", std::string("tet4"));
+  EXPECT_EQ(modelOf(g, Formulation::ThreeD).mesh->blocks[0].type, CellType::Tet10);
+  g.set("Element Order", 1);
+  g.set("Serendipity", true);
+  EXPECT_NE(inputErrorOf(g, Formulation::ThreeD).find("Geometry/Serendipity = true needs Geometry/Element Order = 2"),
+            std::string::npos);
+  g.set("Element Order", 3);
+  EXPECT_THROW(io::validateDeck(g, *validParameters(), "Geometry/"), InputError);  // the validator: 1 .. 2
+}
+
 TEST(Geometry, TheBuiltInContactGeometriesAreRefusedIn3D) {
   try {
     modelOf(Teuchos::ParameterList(), Formulation::ThreeD);

@@ -15,6 +15,7 @@
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
+#include "Isoparametric.hpp"
 
 namespace cgcm::mesh {
 namespace {
@@ -315,6 +316,48 @@ TEST_F(Gmsh, TetSphereOnBlock) {
   for (LocalIndex n : m.nodeSet("fixed")) EXPECT_NEAR(m.coord(n, 2), -1.0, 1e-12);
 }
 
+// Element order 2: gmsh's quadratic cells, their nodes on the curved geometry (Mesh.SecondOrderLinear = 0).
+TEST_F(Gmsh, ElementOrderTwoPutsTheNodesOnTheCurvedGeometry) {
+  for (bool serendipity : {false, true}) {
+    GmshOptions o = dim(2);
+    o.element = {2, serendipity};
+    const Mesh m = readGmsh(kMeshes + "/quarter-disc-on-block.geo", o);
+    for (const auto& b : m.blocks) EXPECT_EQ(b.type, serendipity ? CellType::Quad8 : CellType::Quad9) << b.name;
+    EXPECT_EQ(m.blocks[0].numCells(), 108);
+    EXPECT_EQ(m.blocks[1].numCells(), 144);
+    const auto measure = testing::isoparametricMeasure(m);
+    EXPECT_GT(measure.smallestJacobian, 0.0);
+    // the inscribed polygon of order 1 is within 0.01 of pi/4; the curved cells' arc within 1e-5
+    EXPECT_NEAR(measure.perBody[0], cgcm::kPi / 4, 1e-5);
+    EXPECT_NEAR(measure.perBody[1], 9.0, 1e-12);
+    for (const Surface& surface : m.surfaces) {
+      EXPECT_EQ(surface.nodesPerFacet, 3);
+      EXPECT_EQ(surface.numFacets(), 12);
+    }
+    expectSurfaceOn(
+        m, 0, [](Point3 p) { return std::abs(std::hypot(p.x[0], p.x[1] - 1.05) - 1.0) < 1e-12; }, "arc");
+    expectSurfaceOn(
+        m, 1, [](Point3 p) { return p.x[1] == 0.0; }, "top");
+    // the physical groups hold the mid-edge nodes of their lines: 2 x 13 corners and 2 x 12 edges on the axis
+    EXPECT_EQ(m.nodeSet("axis").size(), 50u);
+    for (LocalIndex n : m.nodeSet("axis")) EXPECT_EQ(m.coord(n, 0), 0.0);
+    for (LocalIndex n : m.nodeSet("driven")) EXPECT_NEAR(m.coord(n, 1), 1.05, 1e-15);
+  }
+  GmshOptions o = dim(3);
+  o.element.order = 2;
+  const Mesh m = readGmsh(kMeshes + "/sphere-on-block-3d.geo", o);
+  for (const auto& b : m.blocks) EXPECT_EQ(b.type, CellType::Tet10) << b.name;
+  const auto measure = testing::isoparametricMeasure(m);
+  EXPECT_GT(measure.smallestJacobian, 0.0);
+  std::printf("[ tet10 ] quarter hemisphere volume %.6f, pi/6 = %.6f\n", measure.perBody[0], cgcm::kPi / 6);
+  EXPECT_NEAR(measure.perBody[0], cgcm::kPi / 6, 1e-3 * cgcm::kPi / 6);  // linear: within 5 %
+  EXPECT_NEAR(measure.perBody[1], 1.5 * 1.5 * 1.0, 1e-12);
+  for (const Surface& surface : m.surfaces) EXPECT_EQ(surface.nodesPerFacet, 6);
+  expectSurfaceOn(
+      m, 0, [](Point3 p) { return std::abs(std::hypot(p.x[0], p.x[1], p.x[2] - 1.05) - 1.0) < 1e-9; }, "sphere");
+  for (LocalIndex n : m.nodeSet("symmetry x")) EXPECT_NEAR(m.coord(n, 0), 0.0, 1e-12);
+}
+
 // Meshes `geo` with gmsh directly and writes it as .msh (gmsh's own format 4.1).
 void writeMsh(const std::string& geo, int d, const std::string& msh) {
   gmsh::initialize(0, nullptr, false);
@@ -393,12 +436,18 @@ Physical Surface("body:plate") = {1};
   EXPECT_CONTAINS(e, "\"body:plate\"");
   EXPECT_CONTAINS(e, "\"Triangle 3\"");
 
-  const std::string quadratic = write("quadratic.geo", std::string(kSquare) + R"(
+  // third order: a .geo is meshed with the options' order over the file's; a .msh holds what it holds
+  const std::string cubic = write("cubic.geo", std::string(kSquare) + R"(
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Recombine Surface{1};
-Mesh.ElementOrder = 2;
+Mesh.ElementOrder = 3;
 Physical Surface("body:plate") = {1};
 )");
-  EXPECT_CONTAINS(errorOf(quadratic, dim(2)), "\"Quadrilateral 9\"");
+  EXPECT_EQ(readGmsh(cubic, dim(2)).blocks.at(0).type, CellType::Quad4);
+  const std::string cubicMsh = (dir_ / "cubic.msh").string();
+  writeMsh(cubic, 2, cubicMsh);
+  const std::string c = errorOf(cubicMsh, dim(2));
+  EXPECT_CONTAINS(c, "\"body:plate\"");
+  EXPECT_CONTAINS(c, "\"Quadrilateral 16\"");
 
   const std::string prisms = write("prisms.geo", std::string(kSquare) + R"(
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
@@ -499,7 +548,20 @@ TEST(CellTypeTableAgainstGmsh, TypeNameAndNodeOrder) {
     gmsh::model::mesh::getElementProperties(row.gmshFacetType, facetName, facetDim, order, numNodes, facetLocal,
                                             numPrimary);
     EXPECT_EQ(facetDim, row.dim - 1);
-    EXPECT_EQ(numNodes, row.nodesPerFacet) << facetName;
+    ASSERT_EQ(numNodes, row.nodesPerFacet) << facetName;
+    // gmsh's facet element orders its nodes as our facets do (core/CellType.hpp): the corners,
+    // then mid-edge node k between corners k and k + 1, then the face centre
+    const int corners = facetCornerCount(row), fd = std::max(facetDim, 1);
+    auto facetAt = [&](int a, int i) { return facetLocal[std::size_t(fd) * std::size_t(a) + i]; };
+    for (int a = corners; a < numNodes; ++a)
+      for (int i = 0; i < facetDim; ++i) {
+        const int k = a - corners;
+        Real want = 0.0;
+        if (k < corners) want = 0.5 * (facetAt(k, i) + facetAt((k + 1) % corners, i));
+        else
+          for (int c = 0; c < corners; ++c) want += facetAt(c, i) / corners;
+        EXPECT_NEAR(facetAt(a, i), want, 1e-14) << facetName << " node " << a;
+      }
     fem::withElement(row.type, [&](auto element) {
       using E = decltype(element);
       for (int a = 0; a < E::numNodes; ++a) {

@@ -11,6 +11,7 @@
 #include "cgcm/mesh/Subdomain.hpp"
 #include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
+#include "Isoparametric.hpp"
 
 namespace cgcm::mesh {
 namespace {
@@ -91,6 +92,133 @@ TEST(Generators, RectangleAndBoxSurfacesAreClosedAndOutward) {
     EXPECT_EQ(box3.surfaces[0].nodesPerFacet, tets ? 3 : 4);
     EXPECT_EQ(box3.nodeSet("zmax").size(), 12u);
   }
+}
+
+// Divergence theorem on the straight facets of a body, over the fan of each facet's corners (the
+// first `corners` nodes): sum of (x . n) dA = dim * volume.
+double cornerFlux(const Mesh& m, int body, int corners) {
+  const Surface& s = m.surfaces.at(body);
+  double flux = 0.0;
+  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    const LocalIndex* n = &s.facets[std::size_t(f) * s.nodesPerFacet];
+    if (m.dim == 2) {
+      const double tx = m.coord(n[1], 0) - m.coord(n[0], 0), ty = m.coord(n[1], 1) - m.coord(n[0], 1);
+      flux += 0.5 * (m.coord(n[0], 0) + m.coord(n[1], 0)) * ty - 0.5 * (m.coord(n[0], 1) + m.coord(n[1], 1)) * tx;
+      continue;
+    }
+    for (int t = 1; t + 1 < corners; ++t) {
+      double u[3], v[3], cen[3];
+      for (int i = 0; i < 3; ++i) {
+        u[i] = m.coord(n[t], i) - m.coord(n[0], i);
+        v[i] = m.coord(n[t + 1], i) - m.coord(n[0], i);
+        cen[i] = (m.coord(n[0], i) + m.coord(n[t], i) + m.coord(n[t + 1], i)) / 3.0;
+      }
+      flux += 0.5 * (cen[0] * (u[1] * v[2] - u[2] * v[1]) + cen[1] * (u[2] * v[0] - u[0] * v[2]) +
+                     cen[2] * (u[0] * v[1] - u[1] * v[0]));
+    }
+  }
+  return flux;
+}
+
+// Every mid-edge node of a facet (the node after its corners, 2D) lies at the midpoint of its corners.
+void expectStraightFacets2d(const Mesh& m, int body) {
+  const Surface& s = m.surfaces.at(body);
+  ASSERT_EQ(s.nodesPerFacet, 3);
+  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    const LocalIndex* n = &s.facets[std::size_t(f) * 3];
+    for (int i = 0; i < 2; ++i) EXPECT_NEAR(m.coord(n[2], i), 0.5 * (m.coord(n[0], i) + m.coord(n[1], i)), 1e-14);
+  }
+}
+
+TEST(Elevate, RectangleBecomesQuad9OrQuad8WithSharedNodesAndFullNodeSets) {
+  for (bool serendipity : {false, true}) {
+    RectangleSpec r;
+    r.lx = 2.0, r.ly = 3.0, r.nx = 4, r.ny = 5;
+    const Mesh linear = rectangle(r);
+    r.element = {2, serendipity};
+    const Mesh m = rectangle(r);
+    ASSERT_EQ(m.blocks.size(), 1u);
+    EXPECT_EQ(m.blocks[0].type, serendipity ? CellType::Quad8 : CellType::Quad9);
+    // 9 x 11 grid points; Quad8 lacks the 20 cell centres
+    EXPECT_EQ(m.numNodes(), serendipity ? 79 : 99);
+    for (LocalIndex n = 0; n < linear.numNodes(); ++n)
+      for (int i = 0; i < 2; ++i) EXPECT_EQ(m.coord(n, i), linear.coord(n, i));  // the corners keep their indices
+    const auto measure = testing::isoparametricMeasure(m);
+    EXPECT_NEAR(measure.perBody[0], 6.0, 1e-12);
+    EXPECT_GT(measure.smallestJacobian, 0.0);
+    EXPECT_EQ(m.surfaces[0].numFacets(), 18);
+    EXPECT_NEAR(cornerFlux(m, 0, 2), 2 * 6.0, 1e-12);
+    expectStraightFacets2d(m, 0);
+    // a node set holds the mid-edge nodes of its edges, no others
+    EXPECT_EQ(m.nodeSet("top").size(), 9u);
+    EXPECT_EQ(m.nodeSet("left").size(), 11u);
+    for (LocalIndex n : m.nodeSet("top")) EXPECT_EQ(m.coord(n, 1), 3.0);
+    for (LocalIndex n : m.nodeSet("left")) EXPECT_EQ(m.coord(n, 0), 0.0);
+  }
+}
+
+TEST(Elevate, BoxBecomesHex27Hex20OrTet10) {
+  for (bool tets : {false, true})
+    for (bool serendipity : {false, true}) {
+      BoxSpec b;
+      b.lx = 1.0, b.ly = 2.0, b.lz = 0.5, b.nx = 2, b.ny = 3, b.nz = 2, b.tetrahedra = tets;
+      b.element = {2, serendipity};
+      const Mesh m = box(b);
+      const CellType type = tets ? CellType::Tet10 : serendipity ? CellType::Hex20 : CellType::Hex27;
+      EXPECT_EQ(m.blocks[0].type, type);
+      const auto measure = testing::isoparametricMeasure(m);
+      EXPECT_NEAR(measure.perBody[0], 1.0, 1e-12);
+      EXPECT_GT(measure.smallestJacobian, 0.0);
+      EXPECT_EQ(m.surfaces[0].nodesPerFacet, cellTypeInfo(type).nodesPerFacet);
+      EXPECT_NEAR(cornerFlux(m, 0, facetCornerCount(cellTypeInfo(type))), 3 * 1.0, 1e-12);
+      // 5 x 7 x 5 grid points; Hex20 lacks the 52 face and 12 cell centres
+      if (!tets) {
+        EXPECT_EQ(m.numNodes(), serendipity ? 111 : 175);
+      }
+      // the face z = lz: its node set is every node on it
+      std::size_t onTop = 0;
+      for (LocalIndex n = 0; n < m.numNodes(); ++n) onTop += m.coord(n, 2) == 0.5;
+      EXPECT_EQ(m.nodeSet("zmax").size(), onTop);
+      for (LocalIndex n : m.nodeSet("zmax")) EXPECT_EQ(m.coord(n, 2), 0.5);
+      if (!tets) {
+        EXPECT_EQ(onTop, serendipity ? 35u - 6u : 35u);
+      }
+    }
+}
+
+TEST(Elevate, QuarterDiskPutsTheArcsEdgeNodesOnTheCircle) {
+  QuarterDiskSpec s;
+  s.radius = 1.0;
+  s.centerY = 1.01;
+  const double linearError = std::abs(cellMeasures(quarterDisk(s)).first - cgcm::kPi / 4);
+  s.element.order = 2;
+  const Mesh m = quarterDisk(s);
+  EXPECT_EQ(m.blocks[0].type, CellType::Quad9);
+  const auto measure = testing::isoparametricMeasure(m);
+  EXPECT_GT(measure.smallestJacobian, 0.0);
+  const Surface& arc = m.surfaces[0];
+  ASSERT_EQ(arc.nodesPerFacet, 3);
+  int onArc = 0;
+  auto radius = [&](LocalIndex n) { return std::hypot(m.coord(n, 0), m.coord(n, 1) - 1.01); };
+  for (LocalIndex f = 0; f < arc.numFacets(); ++f) {
+    const LocalIndex* n = &arc.facets[std::size_t(f) * 3];
+    if (std::abs(radius(n[0]) - 1.0) > 1e-12 || std::abs(radius(n[1]) - 1.0) > 1e-12) continue;
+    ++onArc;
+    EXPECT_NEAR(radius(n[2]), 1.0, 1e-14);
+    // at the middle of the arc between the corners
+    const double d0 = std::hypot(m.coord(n[2], 0) - m.coord(n[0], 0), m.coord(n[2], 1) - m.coord(n[0], 1));
+    const double d1 = std::hypot(m.coord(n[2], 0) - m.coord(n[1], 0), m.coord(n[2], 1) - m.coord(n[1], 1));
+    EXPECT_NEAR(d0, d1, 1e-14);
+  }
+  EXPECT_EQ(onArc, 32);  // the arc's segments at level 0
+  // the curved cells hold the disk far better than the inscribed polygon: the arc's error drops from
+  // O(h^2) to O(h^4) (chord sagitta h^2 / 8R against the parabola's h^4 error)
+  const double error = std::abs(measure.perBody[0] - cgcm::kPi / 4);
+  std::printf("[ quarter disk ] area error: linear %.3e, quadratic %.3e\n", linearError, error);
+  EXPECT_LT(error, 1e-3 * linearError);
+  for (LocalIndex n : m.nodeSet("axis")) EXPECT_EQ(m.coord(n, 0), 0.0);
+  for (LocalIndex n : m.nodeSet("equator")) EXPECT_NEAR(m.coord(n, 1), 1.01, 1e-14);
+  EXPECT_EQ(m.nodeSet("apex").size(), 1u);
 }
 
 TEST(Generators, AppendKeepsBodiesApart) {
@@ -293,6 +421,51 @@ TEST(Mirror, JoinsBodiesOnThePlaneAndKeepsOrientation) {
     }
     // node sets hold both halves: xmax and its image
     EXPECT_EQ(m.nodeSet("xmax").size(), 2 * m.nodeSet("xmin").size());
+  }
+}
+
+TEST(Mirror, QuadraticCellsKeepTheirOrientation) {
+  for (CellType type : {CellType::Quad9, CellType::Quad8, CellType::Hex27, CellType::Hex20, CellType::Tet10}) {
+    const CellTypeInfo& row = cellTypeInfo(type);
+    const bool serendipity = type == CellType::Quad8 || type == CellType::Hex20;
+    Mesh m;
+    double volume = 0.0;
+    if (row.dim == 2) {
+      RectangleSpec r;
+      r.lx = 1.0, r.ly = 2.0, r.nx = 2, r.ny = 3, r.element = {2, serendipity};
+      m = rectangle(r);
+      m.nodeSets["symmetry x"] = m.nodeSets.at("left");
+      volume = 2.0 * 2.0;
+    } else {
+      BoxSpec b;
+      b.lx = 1.0, b.ly = 2.0, b.lz = 1.5, b.nx = 2, b.ny = 2, b.nz = 1, b.tetrahedra = row.simplex;
+      b.element = {2, serendipity};
+      m = box(b);
+      m.nodeSets["symmetry x"] = m.nodeSets.at("xmin");
+      volume = 2.0 * 3.0;
+    }
+    ASSERT_EQ(m.blocks[0].type, type);
+    const LocalIndex nodes = m.numNodes(), onPlane = LocalIndex(m.nodeSet("symmetry x").size());
+    mirror(m, 0);
+    EXPECT_EQ(m.numNodes(), 2 * nodes - onPlane) << row.name;
+    const auto measure = testing::isoparametricMeasure(m);
+    EXPECT_NEAR(measure.perBody[0], volume, 1e-12) << row.name;
+    EXPECT_GT(measure.smallestJacobian, 0.0) << row.name;
+    EXPECT_NEAR(cornerFlux(m, 0, facetCornerCount(row)), row.dim * volume, 1e-12) << row.name;
+    Mesh rebuilt = m;
+    buildSurfaces(rebuilt);
+    // the same facets (each as its set of nodes; their orientation is the flux's)
+    auto facetSets = [](const Surface& surface) {
+      std::vector<std::vector<LocalIndex>> sets;
+      for (LocalIndex f = 0; f < surface.numFacets(); ++f) {
+        const auto first = surface.facets.begin() + std::ptrdiff_t(f) * surface.nodesPerFacet;
+        sets.emplace_back(first, first + surface.nodesPerFacet);
+        std::sort(sets.back().begin(), sets.back().end());
+      }
+      std::sort(sets.begin(), sets.end());
+      return sets;
+    };
+    EXPECT_EQ(facetSets(rebuilt.surfaces[0]), facetSets(m.surfaces[0])) << row.name;
   }
 }
 

@@ -16,7 +16,7 @@ namespace cgcm::fem {
 template <class... E>
 struct ElementList {};
 /// Every element with shape functions: the cell types the kernels take.
-using Elements = ElementList<Quad4, Hex8, Tet4>;
+using Elements = ElementList<Quad4, Hex8, Tet4, Quad8, Quad9, Tet10, Hex20, Hex27>;
 
 namespace detail {
 template <class E>
@@ -62,7 +62,7 @@ inline bool solidKernelTakes(Formulation formulation, CellType type) {
   return withSolidKernel(formulation, type, [](auto) {});
 }
 
-/// The cell types a formulation takes, for messages: "QUAD4" or "HEX8, TETRA4".
+/// The cell types a formulation takes, for messages: "QUAD4, QUAD8, QUAD9" or "HEX8, TETRA4, ...".
 inline std::string cellTypesTakenBy(Formulation formulation) {
   std::string out;
   for (const CellTypeInfo& row : kCellTypes)

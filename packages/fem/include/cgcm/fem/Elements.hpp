@@ -11,11 +11,9 @@
 //   static void shape(const Real (&xi)[dim], Real (&N)[numNodes], Real (&dN)[numNodes][dim]);
 //   static void quadraturePoint(int q, Real (&xi)[dim], Real& weight);
 //   static void shapeAtQp(int q, Real (&N)[numNodes], Real (&dN)[numNodes][dim], Real& weight);
-// all KOKKOS_INLINE_FUNCTION, and, once it has a row of core/CellType.hpp
-// (and an entry in fem::Elements, Dispatch.hpp),
+// all KOKKOS_INLINE_FUNCTION, and its row of core/CellType.hpp (with an entry in
+// fem::Elements, Dispatch.hpp)
 //   static constexpr CellType cellType;
-// Quad8, Quad9, Tet10, Hex20 and Hex27 have none yet: the kernels take them,
-// the mesh readers and the assembly do not.
 //
 // Node orderings (the Exodus II ones; the corners, nodes 0 .. 2^dim - 1 or 0 .. dim,
 // are those of the linear element of the same shape):
@@ -279,8 +277,9 @@ KOKKOS_INLINE_FUNCTION void quadraticHexNode(int a, Real (&xi)[3]) {
 namespace detail {
 /// A quadratic tensor-product cell with 3-point Gauss per direction: its nodes from `node`
 /// (quadraticQuadNode, quadraticHexNode), each node's shape function serendipity or Lagrange.
-template <class E, int NumNodes, int Dim, bool Serendipity>
+template <class E, CellType Type, int NumNodes, int Dim, bool Serendipity>
 struct QuadraticTensorCell : ThreePointGauss<E> {
+  static constexpr CellType cellType = Type;
   static constexpr int numNodes = NumNodes;
   static constexpr int numQp = Dim == 2 ? 9 : 27;
   static constexpr int quadratureDegree = 5;
@@ -307,16 +306,17 @@ struct QuadraticTensorCell : ThreePointGauss<E> {
 }  // namespace detail
 
 /// Serendipity quadratic quadrilateral, 3×3 Gauss quadrature.
-struct Quad8 : detail::QuadraticTensorCell<Quad8, 8, 2, true> {};
+struct Quad8 : detail::QuadraticTensorCell<Quad8, CellType::Quad8, 8, 2, true> {};
 /// Biquadratic (Lagrange) quadrilateral, 3×3 Gauss quadrature.
-struct Quad9 : detail::QuadraticTensorCell<Quad9, 9, 2, false> {};
+struct Quad9 : detail::QuadraticTensorCell<Quad9, CellType::Quad9, 9, 2, false> {};
 /// Serendipity quadratic hexahedron, 3×3×3 Gauss quadrature.
-struct Hex20 : detail::QuadraticTensorCell<Hex20, 20, 3, true> {};
+struct Hex20 : detail::QuadraticTensorCell<Hex20, CellType::Hex20, 20, 3, true> {};
 /// Triquadratic (Lagrange) hexahedron, 3×3×3 Gauss quadrature.
-struct Hex27 : detail::QuadraticTensorCell<Hex27, 27, 3, false> {};
+struct Hex27 : detail::QuadraticTensorCell<Hex27, CellType::Hex27, 27, 3, false> {};
 
 /// Quadratic tetrahedron, four-point quadrature of degree 2.
 struct Tet10 : detail::ShapeAtQuadraturePoints<Tet10> {
+  static constexpr CellType cellType = CellType::Tet10;
   static constexpr int numNodes = 10;
   static constexpr int numQp = 4;
   static constexpr int quadratureDegree = 2;

@@ -6,8 +6,9 @@
 // gathering. No Trilinos dependency.
 //
 // Contents: coordinates (2D meshes, plane strain or axisymmetric, as 2D
-// files); one element block per mesh::ElementBlock, named after it (QUAD4,
-// HEX8, TETRA4); one node set per Mesh::nodeSets entry, with its name; one
+// files); one element block per mesh::ElementBlock, named after it, of the
+// Exodus type of its cells (QUAD4, HEX8, TETRA4, QUAD8, QUAD9, TETRA10, HEX20,
+// HEX27) with all their nodes; one node set per Mesh::nodeSets entry, with its name; one
 // side set per body with a non-empty Surface, named "contact:<body>" (the
 // body's name is its first block's name), as (element, Exodus side) pairs.
 // Variables are declared up front, by name: nodal (one value per node, e.g.

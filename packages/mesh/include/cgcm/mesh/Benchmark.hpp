@@ -3,7 +3,7 @@
 // meridian half-plane (x = radial coordinate >= 0, y = axis), usable both
 // axisymmetrically (spheres) and in plane strain (cylinders, with x = 0 a
 // symmetry line). Cells are graded towards the contact zone at x = 0.
-#include "cgcm/mesh/Mesh.hpp"
+#include "cgcm/mesh/Generators.hpp"
 
 namespace cgcm::mesh {
 
@@ -24,11 +24,13 @@ struct QuarterDiskSpec {
                           ///< also the thickness of the first layer under the surface)
   int body = 0;
   std::string name = "sphere";
+  ElementOrder element;
 };
 
 /// Quarter disk as an O-grid (a core rectangle and two curved patches).
 /// Node sets: "axis" (x = 0), "equator" (the flat side through the centre),
-/// "apex" (the node on the axis on the curved side).
+/// "apex" (the node on the axis on the curved side). Order 2: the nodes of
+/// the edges on the arc lie on the circle (elevate), the other edges are straight.
 Mesh quarterDisk(const QuarterDiskSpec& spec);
 
 struct HalfSpaceSpec {
@@ -40,6 +42,7 @@ struct HalfSpaceSpec {
                           ///< thickness of the first layer under the surface)
   int body = 0;
   std::string name = "half-space";
+  ElementOrder element;
 };
 
 /// Rectangle [0, width] x [topY - depth, topY], graded towards (0, topY).

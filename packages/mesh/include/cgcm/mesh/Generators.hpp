@@ -20,10 +20,12 @@ struct RectangleSpec {
   Grading gradeX = uniformGrading, gradeY = uniformGrading;
   int body = 0;
   std::string name = "block";
+  ElementOrder element;
 };
 
-/// Quad4 mesh of a rectangle. Node sets: left, right, bottom, top (x = x0,
-/// x = x0 + lx, y = y0, y = y0 + ly). Its surface is filled in.
+/// Quad4 (order 2: Quad9 or Quad8) mesh of a rectangle. Node sets: left, right, bottom, top
+/// (x = x0, x = x0 + lx, y = y0, y = y0 + ly). Its surface is filled in. The corner nodes come
+/// first, numbered as at order 1.
 Mesh rectangle(const RectangleSpec& spec);
 
 struct BoxSpec {
@@ -33,10 +35,25 @@ struct BoxSpec {
   bool tetrahedra = false;      ///< split every hexahedron into 6 tetrahedra
   int body = 0;
   std::string name = "block";
+  ElementOrder element;
 };
 
-/// Hex8 (or Tet4) mesh of a box. Node sets: xmin, xmax, ymin, ymax, zmin, zmax.
+/// Hex8 or Tet4 (order 2: Hex27, Hex20 or Tet10) mesh of a box. Node sets: xmin, xmax, ymin,
+/// ymax, zmin, zmax.
 Mesh box(const BoxSpec& spec);
+
+/// Where elevate puts the node of the edge between nodes a and b: x (dim entries) holds the
+/// edge's midpoint and may be moved, e.g. onto the curved boundary the edge stands for.
+using EdgeNodePlacement = std::function<void(LocalIndex a, LocalIndex b, Real* x)>;
+
+/// Makes a mesh of linear cells quadratic, in place: Quad4 -> Quad9 (serendipity: Quad8), Hex8
+/// -> Hex27 (Hex20), Tet4 -> Tet10. Each edge gets one node, shared by its cells, at its
+/// midpoint or where `place` moves it; each quadrilateral face and each quadrilateral or
+/// hexahedral cell of the complete (Lagrange) types one node, at the transfinite (Coons) blend
+/// of its corners and edge nodes (the centre of a straight cell). The existing nodes keep their
+/// indices; the new ones follow. A new node joins every node set that holds all the corners of
+/// its edge, face or cell. The surfaces are rebuilt (buildSurfaces): elevate before trimming them.
+void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place = {});
 
 /// Appends `other` to `mesh` as new bodies (body ids shifted by mesh.numBodies);
 /// node-set names of `other` get `prefix` prepended. Dimensions must agree.

@@ -83,6 +83,10 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 /// sublist describes (the Sphere Radius unless it is a sphere on a sphere).
 Real reducedRadius(const Teuchos::ParameterList& geometry);
 
+/// The cells Geometry/Element Order and Serendipity of a validated Geometry sublist ask for.
+/// Throws InputError for Serendipity without Element Order = 2.
+ElementOrder elementOrder(const Teuchos::ParameterList& geometry);
+
 /// r_S0 of the interaction, asked for only when the bodies interact (the
 /// built-in contact geometries, gmsh meshes of several bodies), after the
 /// mesh's own checks: the interaction's parameters are read only then.

@@ -22,11 +22,16 @@
 //     gets all its exterior facets.
 //   * Every group needs a name.
 //
-// Supported elements: 4-node quadrilaterals in 2D; 8-node hexahedra or 4-node
-// tetrahedra in 3D (one kind per body); points, 2-node lines, 3-node
-// triangles and 4-node quadrilaterals on the boundary groups. Anything else
-// (triangles in 2D, quadratic elements, prisms, pyramids) is an InputError
-// naming the file, the group and the gmsh element type.
+// Supported elements: the cell types of core/CellType.hpp, one kind per body:
+// quadrilaterals of 4, 8 or 9 nodes in 2D; hexahedra of 8, 20 or 27 nodes and
+// tetrahedra of 4 or 10 nodes in 3D; on the boundary groups points and the
+// facets of those cells (lines of 2 or 3 nodes, triangles of 3 or 6,
+// quadrilaterals of 4, 8 or 9). Anything else (triangles in 2D, prisms,
+// pyramids, third order) is an InputError naming the file, the group and the
+// gmsh element type. A .geo is meshed with the cells of GmshOptions::element
+// (gmsh's Mesh.ElementOrder and Mesh.SecondOrderIncomplete, the deck's
+// choice over the file's), the nodes of quadratic cells on the curved
+// geometry; a .msh is read with the cells it holds.
 //
 // Node indices are 0-based and contiguous, in ascending gmsh node tag, over
 // the nodes that belong to a body's cells. Cells are reordered where needed so
@@ -46,6 +51,7 @@ struct GmshOptions {
   /// DefineConstant entries. Not allowed for a .msh.
   std::map<std::string, double> numbers;
   bool verbose = false;  ///< let gmsh print its progress (General.Terminal = 1)
+  ElementOrder element;  ///< the cells a .geo is meshed with (a .msh: ignored)
 };
 
 /// Reads `path` (.geo or .msh) into a Mesh of dimension options.dim following

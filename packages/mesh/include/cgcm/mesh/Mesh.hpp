@@ -23,6 +23,13 @@ inline const char* cellTypeName(CellType type) { return cellTypeInfo(type).name;
 /// (1-based) of a cell is entry s - 1 (the rows of core/CellType.hpp).
 const std::vector<std::vector<int>>& localFacets(CellType type);
 
+/// The cells a mesh is made of (generated, or meshed by gmsh): linear, or quadratic with or
+/// without the face and volume centre nodes of quadrilaterals and hexahedra.
+struct ElementOrder {
+  int order = 1;             ///< 1 or 2
+  bool serendipity = false;  ///< order 2: QUAD8, HEX20 instead of QUAD9, HEX27 (tetrahedra: TETRA10 either way)
+};
+
 /// Cells of one type belonging to one body.
 struct ElementBlock {
   std::string name;
@@ -48,6 +55,11 @@ struct Surface {
   std::vector<LocalIndex> facetCells;
   LocalIndex numFacets() const { return LocalIndex(facets.size() / nodesPerFacet); }
 };
+
+/// A row of core/CellType.hpp whose facets have `nodesPerFacet` nodes in `dim` dimensions: what a
+/// Surface's facets are (their corners, facetCornerCount; their reflection). The rows that share
+/// such facets agree on them. Throws std::logic_error if no cell type has such facets.
+const CellTypeInfo& rowWithFacets(int dim, int nodesPerFacet);
 
 /// The surface with every quad4 facet split into the triangles (0, 1, 2),
 /// (0, 2, 3) (facet f -> 2f, 2f + 1; facetCells follow); triangles and 2D
