@@ -7,13 +7,13 @@ At mu = 8 (cells of 0.4 r0) the jump-in does not reach the contact branch
 within the default 400 relaxation iterations (|f| 7.6e-5 after 11 min).
 
 Each mu runs Method 3 with both surface densities (Interaction/Surface
-Density: "reference area", the default, and "current area"), each at finite
+Density: "current area", the default, and "reference area"), each at finite
 and at small strain, on the band mesh (meshes/sphere-on-half-space-band.geo)
 with cells of at most a quarter cohesive length E* r_S0^2 / w and r0, along
 the path tools/pulloff_map.py plans (approach through the jump-to-contact,
 retraction past the minimum). Method 1 (Interaction/Method = volume pair,
 finite strain) is the arbiter: its jump-in on these meshes would take hours,
-so a Method 3 run with a checkpoint stops three states before Method 3's
+so a Method 3 run (reference area) with a checkpoint stops three states before its
 minimum and Method 1 goes on from there (cgcm --restart) to three states
 after it; its minimum is taken over its own states only.
 
@@ -33,13 +33,14 @@ import subprocess
 import time
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pulloff_map as pm  # noqa: E402
 from analytic_csv import lj_sphere_pulloff  # noqa: E402
 
-DENSITIES = {"reference": "reference area", "current": "current area"}
+DENSITIES = {"current": "current area", "reference": "reference area"}
 KINEMATICS = ("finite strain", "small strain")
 
 
@@ -217,9 +218,9 @@ def plot(table, png):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     ax.axhspan(-1.5, 1.5, color="0.9", lw=0)
     ax.axhline(0.0, color="k", lw=1.2, label="Lennard-Jones sphere (Derjaguin, small strain)")
-    styles = [("reference_finite", "o-", "C0", "Method 3, β0 dA (default), finite strain"),
+    styles = [("reference_finite", "o-", "C0", "Method 3, β0 dA, finite strain"),
               ("reference_small", "o:", "C0", "Method 3, β0 dA, small strain"),
-              ("current_finite", "s-", "C3", "Method 3, β0 da, finite strain"),
+              ("current_finite", "s-", "C3", "Method 3, β0 da (default), finite strain"),
               ("current_small", "s:", "C3", "Method 3, β0 da, small strain"),
               ("volume_pair", "D-", "C2", "Method 1 (volume pairs), finite strain")]
     for key, style, color, label in styles:
@@ -229,6 +230,7 @@ def plot(table, png):
     ax.set_xscale("log")
     ax.set_xticks(mu)
     ax.set_xticklabels([f"{m:g}" for m in mu])
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     ax.set_xlabel(f"Tabor parameter μ (γL = {rows[0]['gammaL']})")
     ax.set_ylabel("|P_min| against the Lennard-Jones sphere (%)")
     ax.legend(fontsize=7.5, loc="upper left")

@@ -62,12 +62,12 @@ Teuchos::RCP<const ParameterList> validParameters() {
                "Gauss points per surface segment; in 3D per direction of a facet (n x n on a quadrilateral; on a "
                "triangle 1, 6, 7 points for n = 1, 2, 3 and 6 n (n + 1) beyond), and 2 unless given",
                intAtLeast(1));
-    inter->set("Surface Density", "reference area",
-               "half-space point: how a body's surface layer is counted. \"reference area\": the reference density "
-               "beta0 over the undeformed area dA, the layer's particles conserved as the surface stretches (the "
-               "default); \"current area\": beta0 over the current area da, the paper's eq. (21), which counts a "
-               "stretched layer's particles more than once and at strong adhesion overestimates the pull-off "
-               "(doc/theory.md#surface-density)",
+    inter->set("Surface Density", "current area",
+               "half-space point: how a body's surface layer is counted. \"current area\" (the default): the "
+               "reference density beta0 over the current area da, the paper's eq. (21); \"reference area\": beta0 "
+               "over the undeformed area dA, the layer's particles conserved as the surface stretches. Against "
+               "Method 1, reference area is closer where the surface stretches little (sigma_max/E* below about "
+               "0.3) and far too weak where it stretches much (doc/theory.md#surface-density)",
                choices({"current area", "reference area"}));
     inter->set("Cutoff", 10.0, "interaction cutoff in units of r0: farther points are skipped", atLeast(1.0));
     inter->set("Cutoff Taper", 0.2,
