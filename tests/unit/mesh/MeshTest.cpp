@@ -44,56 +44,6 @@ std::pair<double, double> cellMeasures(const Mesh& m) {
   return {total, smallest};
 }
 
-// Divergence theorem on the surface of a body: sum over facets of (x . n) dA = dim * volume.
-double surfaceFlux(const Mesh& m, int body) {
-  const Surface& s = m.surfaces.at(body);
-  double flux = 0.0;
-  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
-    const LocalIndex* n = &s.facets[std::size_t(f) * s.nodesPerFacet];
-    if (m.dim == 2) {
-      const double tx = m.coord(n[1], 0) - m.coord(n[0], 0), ty = m.coord(n[1], 1) - m.coord(n[0], 1);
-      const double mx = 0.5 * (m.coord(n[0], 0) + m.coord(n[1], 0)), my = 0.5 * (m.coord(n[0], 1) + m.coord(n[1], 1));
-      flux += mx * ty - my * tx;  // x . (t_y, -t_x)
-    } else {
-      // split quads into two triangles; area vector = cross / 2
-      const int nt = s.nodesPerFacet == 4 ? 2 : 1;
-      for (int t = 0; t < nt; ++t) {
-        const LocalIndex a = n[0], b = n[t + 1], c = n[t + 2];
-        double u[3], v[3], cen[3];
-        for (int i = 0; i < 3; ++i) {
-          u[i] = m.coord(b, i) - m.coord(a, i);
-          v[i] = m.coord(c, i) - m.coord(a, i);
-          cen[i] = (m.coord(a, i) + m.coord(b, i) + m.coord(c, i)) / 3.0;
-        }
-        const double nx = u[1] * v[2] - u[2] * v[1], ny = u[2] * v[0] - u[0] * v[2], nz = u[0] * v[1] - u[1] * v[0];
-        flux += 0.5 * (cen[0] * nx + cen[1] * ny + cen[2] * nz);
-      }
-    }
-  }
-  return flux;
-}
-
-TEST(Generators, RectangleAndBoxSurfacesAreClosedAndOutward) {
-  RectangleSpec r;
-  r.lx = 2.0, r.ly = 3.0, r.nx = 4, r.ny = 5;
-  Mesh rect = rectangle(r);
-  EXPECT_EQ(rect.numNodes(), 30);
-  EXPECT_NEAR(cellMeasures(rect).first, 6.0, 1e-12);
-  EXPECT_EQ(rect.surfaces[0].numFacets(), 18);
-  EXPECT_NEAR(surfaceFlux(rect, 0), 2 * 6.0, 1e-12);
-  for (bool tets : {false, true}) {
-    BoxSpec b;
-    b.lx = 1.0, b.ly = 2.0, b.lz = 0.5, b.nx = 2, b.ny = 3, b.nz = 2, b.tetrahedra = tets;
-    Mesh box3 = box(b);
-    const auto [volume, smallest] = cellMeasures(box3);
-    EXPECT_NEAR(volume, 1.0, 1e-12);
-    EXPECT_GT(smallest, 0.0);
-    EXPECT_NEAR(surfaceFlux(box3, 0), 3 * 1.0, 1e-12);
-    EXPECT_EQ(box3.surfaces[0].nodesPerFacet, tets ? 3 : 4);
-    EXPECT_EQ(box3.nodeSet("zmax").size(), 12u);
-  }
-}
-
 // Divergence theorem on the straight facets of a body, over the fan of each facet's corners (the
 // first `corners` nodes): sum of (x . n) dA = dim * volume.
 double cornerFlux(const Mesh& m, int body, int corners) {
@@ -118,6 +68,30 @@ double cornerFlux(const Mesh& m, int body, int corners) {
     }
   }
   return flux;
+}
+
+// The same on linear facets (all their nodes are corners).
+double surfaceFlux(const Mesh& m, int body) { return cornerFlux(m, body, m.surfaces.at(body).nodesPerFacet); }
+
+TEST(Generators, RectangleAndBoxSurfacesAreClosedAndOutward) {
+  RectangleSpec r;
+  r.lx = 2.0, r.ly = 3.0, r.nx = 4, r.ny = 5;
+  Mesh rect = rectangle(r);
+  EXPECT_EQ(rect.numNodes(), 30);
+  EXPECT_NEAR(cellMeasures(rect).first, 6.0, 1e-12);
+  EXPECT_EQ(rect.surfaces[0].numFacets(), 18);
+  EXPECT_NEAR(surfaceFlux(rect, 0), 2 * 6.0, 1e-12);
+  for (bool tets : {false, true}) {
+    BoxSpec b;
+    b.lx = 1.0, b.ly = 2.0, b.lz = 0.5, b.nx = 2, b.ny = 3, b.nz = 2, b.tetrahedra = tets;
+    Mesh box3 = box(b);
+    const auto [volume, smallest] = cellMeasures(box3);
+    EXPECT_NEAR(volume, 1.0, 1e-12);
+    EXPECT_GT(smallest, 0.0);
+    EXPECT_NEAR(surfaceFlux(box3, 0), 3 * 1.0, 1e-12);
+    EXPECT_EQ(box3.surfaces[0].nodesPerFacet, tets ? 3 : 4);
+    EXPECT_EQ(box3.nodeSet("zmax").size(), 12u);
+  }
 }
 
 // Every mid-edge node of a facet (the node after its corners, 2D) lies at the midpoint of its corners.
