@@ -125,7 +125,8 @@ TEST(Geometry, ElementOrderMakesQuadraticCellsOfEveryBuiltInGeometry) {
     for (const auto& b : m.mesh->blocks) EXPECT_EQ(b.type, CellType::Quad9) << b.name;
     EXPECT_EQ(m.mesh->surfaces[0].nodesPerFacet, 3);
     g.set("Serendipity", true);
-    for (const auto& b : modelOf(g, f).mesh->blocks) EXPECT_EQ(b.type, CellType::Quad8) << b.name;
+    const Model serendipity = modelOf(g, f);  // held: a range-for over a temporary's mesh would outlive it
+    for (const auto& b : serendipity.mesh->blocks) EXPECT_EQ(b.type, CellType::Quad8) << b.name;
   }
   Teuchos::ParameterList g;
   g.set("Type", std::string("block"));
