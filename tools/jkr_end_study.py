@@ -29,8 +29,6 @@ import csv
 import math
 import os
 import shutil
-import subprocess
-import time
 
 import matplotlib
 import matplotlib.ticker
@@ -71,24 +69,6 @@ def minimum(rows):
     return pmin, umin, inside, float(rows[k]["contact_radius"])
 
 
-def run(args, folder, log, rerun, restart=False):
-    """One cgcm command; a finished run of the same command (its log ends with `exit`) is reused."""
-    command = " ".join(args)
-    if not rerun and os.path.exists(log):
-        with open(log) as f:
-            text = f.read()
-        if text.startswith(command + "\n") and "\nexit " in text:
-            return int(text.rsplit("\nexit ", 1)[1].split()[0]), float(text.rsplit(" after ", 1)[1].split()[0])
-    if not restart:
-        shutil.rmtree(folder, ignore_errors=True)  # a failed run must not leave an older curve behind
-    t0 = time.time()
-    proc = subprocess.run(args, capture_output=True, text=True)
-    seconds = time.time() - t0
-    with open(log, "w") as f:
-        f.write(f"{command}\n{proc.stdout}{proc.stderr}\nexit {proc.returncode} after {seconds:.1f} s\n")
-    return proc.returncode, seconds
-
-
 def case_name(case):
     return f"gL{case['gammaL']:g}-mu{case['mu']:.3g}"
 
@@ -99,7 +79,7 @@ def method3(case, density, kinematics, out, rerun):
     args = [os.path.join(pm.BUILD, "bin", "cgcm"), os.path.join(pm.ROOT, "inputs", "sphere-on-half-space.xml"),
             f"Output/Directory={folder}", f"Material/Kinematics={kinematics}", *case["overrides"],
             f"Interaction/Surface Density={DENSITIES[density]}"]
-    code, seconds = run(args, folder, os.path.join(out, name + ".log"), rerun)
+    code, seconds = pm.run_logged(args, folder, os.path.join(out, name + ".log"), rerun)
     curve = os.path.join(folder, "load_curve.csv")
     pmin, umin, inside, a = minimum(retraction(stable_rows(curve))) if os.path.exists(curve) else (math.nan,) * 2 + (False, math.nan)
     return name, {"code": code, "seconds": seconds, "P_min": pmin, "u_min": umin, "inside": inside, "a": a,
@@ -123,7 +103,7 @@ def method1(case, reference_run, out, rerun):
             *[o for o in case["overrides"] if not o.startswith(("Loading/Approach Path", "Output/Checkpoint"))],
             "Interaction/Surface Density=reference area", "Output/Checkpoint=true",
             f"Loading/Approach Path={{{start},{u_in},{stop['u']}}}"]
-    code, s1 = run(base, folder, os.path.join(out, name + "-checkpoint.log"), rerun)
+    code, s1 = pm.run_logged(base, folder, os.path.join(out, name + "-checkpoint.log"), rerun)
     restart_step = int(stop["step"])
     if code != 0:
         return name, {"code": code, "seconds": s1, "P_min": math.nan, "u_min": math.nan, "inside": False,
@@ -134,7 +114,7 @@ def method1(case, reference_run, out, rerun):
     restart_step = int(stable_rows(stopped)[-1]["step"])
     args = [os.path.join(pm.BUILD, "bin", "cgcm"), "--restart", folder, "Interaction/Method=volume pair",
             f"Loading/Approach Path={{{start},{u_in},{end['u']}}}"]
-    code, s2 = run(args, folder, os.path.join(out, name + ".log"), rerun, restart=True)
+    code, s2 = pm.run_logged(args, folder, os.path.join(out, name + ".log"), rerun, restart=True)
     pmin, umin, inside, a = minimum(stable_rows(os.path.join(folder, "load_curve.csv"), after_step=restart_step))
     return name, {"code": code, "seconds": s2, "P_min": pmin, "u_min": umin, "inside": inside, "a": a,
                   "restart_step": restart_step}

@@ -144,13 +144,11 @@ def parabola_minimum(u, p):
     return p1 - a * (uv - u1) ** 2, uv, True
 
 
-def run_case(case, kinematics, out, rerun):
-    """One cgcm run; a finished run of the same command in `out` is reused unless rerun."""
-    name = f"gL{case['gammaL']:g}-mu{case['mu']:.3g}-{kinematics.split()[0]}"
-    folder = os.path.join(out, name)
-    args = [os.path.join(BUILD, "bin", "cgcm"), os.path.join(ROOT, "inputs", "sphere-on-half-space.xml"),
-            f"Output/Directory={folder}", f"Material/Kinematics={kinematics}", *case["overrides"]]
-    log = os.path.join(out, name + ".log")
+def run_logged(args, folder, log, rerun, restart=False):
+    """Runs one cgcm command into `folder`, its output and exit code in `log`; a finished run of the
+    same command (its log ends with `exit`) is reused unless rerun. Returns (exit code, seconds).
+    A fresh run starts from an empty folder (a failed run must not leave an older curve behind),
+    unless it is a restart, which goes on in it."""
     command = " ".join(args)
     cached = None
     if not rerun and os.path.exists(log):
@@ -159,14 +157,25 @@ def run_case(case, kinematics, out, rerun):
         if text.startswith(command + "\n") and "\nexit " in text:
             cached = text
     if cached is None:
-        shutil.rmtree(folder, ignore_errors=True)  # a failed run must not leave an older run's curve behind
+        if not restart:
+            shutil.rmtree(folder, ignore_errors=True)
         t0 = time.time()
         proc = subprocess.run(args, capture_output=True, text=True)
         cached = f"{command}\n{proc.stdout}{proc.stderr}\nexit {proc.returncode} after {time.time() - t0:.1f} s\n"
         with open(log, "w") as f:
             f.write(cached)
     code, seconds = cached.rsplit("\nexit ", 1)[1].split(" after ")
-    result = {"status": "completed" if code == "0" else f"exit {code}", "seconds": float(seconds.split()[0])}
+    return int(code), float(seconds.split()[0])
+
+
+def run_case(case, kinematics, out, rerun):
+    """One cgcm run; a finished run of the same command in `out` is reused unless rerun."""
+    name = f"gL{case['gammaL']:g}-mu{case['mu']:.3g}-{kinematics.split()[0]}"
+    folder = os.path.join(out, name)
+    args = [os.path.join(BUILD, "bin", "cgcm"), os.path.join(ROOT, "inputs", "sphere-on-half-space.xml"),
+            f"Output/Directory={folder}", f"Material/Kinematics={kinematics}", *case["overrides"]]
+    code, seconds = run_logged(args, folder, os.path.join(out, name + ".log"), rerun)
+    result = {"status": "completed" if code == 0 else f"exit {code}", "seconds": seconds}
     result["unknowns"] = ""
     summary = os.path.join(folder, "summary.txt")
     if os.path.exists(summary):

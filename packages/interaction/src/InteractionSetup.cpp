@@ -185,7 +185,8 @@ std::shared_ptr<Interaction> InteractionSetup::create(const mesh::Mesh& mesh) co
   if (method == Method::VolumePair)
     return std::make_shared<VolumeInteraction>(mesh, densities, potential, volumeOptions);
   auto surface = std::make_shared<SurfaceInteraction>(mesh.surfaces, densities, potential, surfaceOptions);
-  surface->setReferenceConfiguration(mesh.coords);
+  // the table of dA only where it is read
+  if (surfaceOptions.surfaceDensity == SurfaceDensity::ReferenceArea) surface->setReferenceConfiguration(mesh.coords);
   return surface;
 }
 
