@@ -34,10 +34,12 @@ Teuchos::RCP<const ParameterList> validParameters() {
                "volume pair: Gauss points per direction of a cell for pairs of cells far apart (1 .. 6); closer "
                "pairs get more, up to the Max Volume Quadrature Order",
                intBetween(1, 6));
-    inter->set("Max Volume Quadrature Order", 6,
+    inter->set("Max Volume Quadrature Order", 0,
                "volume pair: most Gauss points per direction for pairs of cells close to each other (1 .. 12 in "
-               "2D, 1 .. 6 in 3D)",
-               intBetween(1, 12));
+               "2D, 1 .. 6 in 3D; 4 for pairs with a tetrahedron); 0: the most the kernel holds (12 in 2D and "
+               "axisymmetry, 6 in 3D). A lower cap leaves close pairs under-integrated (the run's summary counts "
+               "the pairs at the cap)",
+               intBetween(0, 12));
     inter->set("Pair List Skin", 1.0,
                "volume pair: the pair list covers cutoff + skin (units of r0) and is rebuilt when a node has moved "
                "by half the skin",
@@ -169,7 +171,8 @@ InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& 
   volume.maxQuadratureOrder = in.get<int>("Max Volume Quadrature Order");
   volume.cutoff = surface.cutoff;
   volume.skin = in.get<double>("Pair List Skin") * phys.r0;
-  if (s.method == Method::VolumePair && volume.maxQuadratureOrder < volume.quadratureOrder)
+  if (s.method == Method::VolumePair && volume.maxQuadratureOrder > 0 &&
+      volume.maxQuadratureOrder < volume.quadratureOrder)
     throw InputError("Interaction/Max Volume Quadrature Order = " + std::to_string(volume.maxQuadratureOrder) +
                      " is below Interaction/Volume Quadrature Order = " + std::to_string(volume.quadratureOrder));
   if (s.method == Method::VolumePair && threeD && volume.maxQuadratureOrder > kMaxVolumeOrder3D)

@@ -195,7 +195,7 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
   summary_.minCellGap = std::numeric_limits<Real>::infinity();
   for (const Candidate& c : candidates(coords, cutoff + skin)) {
     if (!rowCells_.empty() && !rowCells_[c.rowCell]) continue;
-    const int extra = int(std::ceil(c.size / std::max(c.gap, 0.5 * r0)));
+    const int extra = int(std::ceil(kCloseOrderFactor * c.size / std::max(c.gap, 0.5 * r0)));
     // a tetrahedron's rule holds kMaxTetOrder^3 points on each of its four hexahedra
     const int cap = cellTypeInfo(CellType(view_.cellType(c.rowCell))).simplex ||
                             cellTypeInfo(CellType(view_.cellType(c.colCell))).simplex
