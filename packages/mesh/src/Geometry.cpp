@@ -151,7 +151,7 @@ Teuchos::RCP<const ParameterList> validParameters() {
     g->set("Element Order", 1,
            "1: linear cells (QUAD4; HEX8, TETRA4), or 2: quadratic cells with mid-edge nodes, QUAD9 (QUAD8 with "
            "Serendipity), HEX27 (HEX20), TETRA10, whose edges and faces follow curved boundaries: the sphere's "
-           "arc of the built-in geometries; a .geo's curves and surfaces (gmsh's Mesh.ElementOrder). A .msh file "
+           "arc of the built-in geometries (in 3D its surface); a .geo's curves and surfaces (gmsh's Mesh.ElementOrder). A .msh file "
            "is read as it is and its cells must have this order. The interaction (Method 3 and Method 1) takes "
            "linear cells only",
            intBetween(1, 2));
