@@ -248,7 +248,7 @@ namespace {
 constexpr Real kKite = 0.75;
 constexpr Real kBlendEnd = 2.0;
 
-// Signed volume of a Hex8 (times 64: the Jacobian determinant at its centre over 8).
+// The sign of a Hex8's volume: 512 times its Jacobian determinant at the centre.
 Real hexOrientation(const Mesh& m, const LocalIndex* h) {
   Real e[3][3] = {};
   static const int sign[3][8] = {
