@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/mesh/Benchmark.hpp"
 
 namespace cgcm::app {
 
@@ -64,6 +65,11 @@ std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& de
       return estimateSize((nx + 1) * (ny + 1) * (nz + 1), cells, formulation);
     }
     return estimateSize((nx + 1) * (ny + 1), nx * ny, formulation);
+  }
+  if (formulation == Formulation::ThreeD && type == "sphere on half-space") {  // the swept quarter model
+    const int level = g.get<int>("Mesh Refinement");
+    const mesh::MeshSize size = mesh::sphereOnHalfSpaceQuarterSize(level, g.get<int>("Azimuthal Cells") << level);
+    return estimateSize(size.nodes, size.cells, formulation);
   }
   const double grow = std::pow(4.0, g.get<int>("Mesh Refinement"));
   return estimateSize(kSphereNodes * grow, kSphereCells * grow, formulation);

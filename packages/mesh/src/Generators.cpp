@@ -225,7 +225,7 @@ void buildSurfaces(Mesh& mesh) {
   }
 }
 
-void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place) {
+void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place, const FaceNodePlacement& placeFace) {
   if (!mesh.nodeIds.empty()) throw std::logic_error("mesh::elevate: a mesh with its own node ids is a distributed part");
   const int dim = mesh.dim;
   const LocalIndex firstNew = mesh.numNodes();
@@ -282,6 +282,31 @@ void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place) {
           for (int i = 0; i < dim; ++i)
             mesh.coords[std::size_t(nodes[a]) * dim + i] +=
                 weight * (mesh.coord(nodes[e], i) - 0.5 * (mesh.coord(edge[0], i) + mesh.coord(edge[1], i)));
+        }
+      }
+    }
+  }
+  if (placeFace && dim == 3) {
+    std::vector<std::array<Real, 3>> moved(cornersOf.size(), std::array<Real, 3>{});
+    for (std::size_t k = 0; k < cornersOf.size(); ++k) {
+      if (cornersOf[k].size() != 4) continue;
+      Real* x = &mesh.coords[(std::size_t(firstNew) + k) * 3];
+      const std::array<Real, 3> before = {x[0], x[1], x[2]};
+      placeFace(cornersOf[k], x);
+      for (int i = 0; i < 3; ++i) moved[k][std::size_t(i)] = x[i] - before[std::size_t(i)];
+    }
+    for (const auto& b : mesh.blocks) {
+      const CellTypeInfo& row = cellTypeInfo(b.type);
+      const int nc = cornerCount(row), nq = row.numNodes;
+      for (LocalIndex c = 0; c < b.numCells(); ++c) {
+        const LocalIndex* nodes = &b.connectivity[std::size_t(c) * nq];
+        for (int a = nc; a < nq; ++a) {
+          if (cornersOf[std::size_t(nodes[a] - firstNew)].size() != 8) continue;
+          for (int f = nc; f < nq; ++f) {
+            const auto& move = moved[std::size_t(nodes[f] - firstNew)];
+            if (cornersOf[std::size_t(nodes[f] - firstNew)].size() == 4)
+              for (int i = 0; i < 3; ++i) mesh.coords[std::size_t(nodes[a]) * 3 + i] += 0.5 * move[std::size_t(i)];
+          }
         }
       }
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <sstream>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/core/ParameterValidators.hpp"
@@ -114,9 +115,9 @@ Teuchos::RCP<const ParameterList> validParameters() {
   static const Teuchos::RCP<const ParameterList> valid = [] {
     auto g = Teuchos::rcp(new ParameterList("Geometry"));
     g->set("Type", "sphere on half-space",
-                 "\"sphere on half-space\" (the paper's benchmark; cylinder on half-space in plane strain), "
-                 "\"sphere on sphere\", \"block\" (a rectangle or box stretched along its last axis), or \"gmsh\" "
-                 "(the mesh of Geometry/File; meshes/README.md)",
+                 "\"sphere on half-space\" (the paper's benchmark; cylinder on half-space in plane strain; in 3D a "
+                 "quarter model of hexahedra, Azimuthal Cells), \"sphere on sphere\", \"block\" (a rectangle or box "
+                 "stretched along its last axis), or \"gmsh\" (the mesh of Geometry/File; meshes/README.md)",
                  choices({"sphere on half-space", "sphere on sphere", "block", "gmsh"}));
     g->set("File", "",
                  "Type = gmsh: a gmsh .geo (meshed when read) or .msh file; a relative path is taken from the "
@@ -150,7 +151,7 @@ Teuchos::RCP<const ParameterList> validParameters() {
     g->set("Element Order", 1,
            "1: linear cells (QUAD4; HEX8, TETRA4), or 2: quadratic cells with mid-edge nodes, QUAD9 (QUAD8 with "
            "Serendipity), HEX27 (HEX20), TETRA10, whose edges and faces follow curved boundaries: the sphere's "
-           "arc of the built-in geometries; a .geo's curves and surfaces (gmsh's Mesh.ElementOrder). A .msh file "
+           "arc of the built-in geometries (in 3D its surface); a .geo's curves and surfaces (gmsh's Mesh.ElementOrder). A .msh file "
            "is read as it is and its cells must have this order. The interaction (Method 3 and Method 1) takes "
            "linear cells only",
            intBetween(1, 2));
@@ -173,6 +174,12 @@ Teuchos::RCP<const ParameterList> validParameters() {
                  "the half-space and 16 on the sphere at level 0. Smaller zones resolve smaller contacts (large "
                  "gammaL) with the same number of cells",
                  between(0.02, 0.85));
+    g->set("Azimuthal Cells", 8,
+           "Type = sphere on half-space in 3D: cells over the quarter model's 90 degrees at Mesh Refinement 0 "
+           "(each level doubles them), even: the meridian meshes of plane strain and axisymmetry swept about the "
+           "axis, with a butterfly core of half as many cells per side around it. The core's radius, about Azimuthal "
+           "Cells x Contact Zone Size / 40 sphere radii, must stay below about 0.35 (an error says how many fit)",
+           intBetween(2, 64));
     auto& block = g->sublist("Block", false,
                                    "Type = block: corner at the origin; symmetry rollers on the faces x = 0, y = 0 "
                                    "(and z = 0 in 3D); the face at the far end of the last axis moves by the load u");
@@ -258,26 +265,92 @@ void checkElementOrder(const Mesh& m, const ElementOrder& wanted, const std::str
   }
 }
 
+// The meridian meshes of the sphere (its centre at centreY) and the half-space block.
+mesh::QuarterDiskSpec sphereSpec(const ParameterList& g, Real centreY) {
+  mesh::QuarterDiskSpec sphere;
+  sphere.radius = g.get<double>("Sphere Radius");
+  sphere.centerY = centreY;
+  sphere.refinement = g.get<int>("Mesh Refinement");
+  sphere.element = elementOrder(g);
+  sphere.fineAngle = 0.8 * g.get<double>("Contact Zone Size");  // the fine cells of both bodies are then equally long
+  sphere.name = "sphere";
+  return sphere;
+}
+
+mesh::HalfSpaceSpec halfSpaceSpec(const ParameterList& g) {
+  const Real R0 = g.get<double>("Sphere Radius");
+  mesh::HalfSpaceSpec h;
+  h.width = h.depth = g.get<double>("Half-Space Size") * R0;
+  h.fineLength = g.get<double>("Contact Zone Size") * R0;
+  h.refinement = g.get<int>("Mesh Refinement");
+  h.element = elementOrder(g);
+  return h;
+}
+
+// The benchmark in 3D: the meridian meshes swept over a quarter (x, y >= 0) into hexahedra, with the
+// node sets, conditions and responses of a gmsh mesh of it (buildFromGmsh on
+// meshes/sphere-on-half-space-3d.geo), so that either gives the same kind of run.
+void buildSphereOnHalfSpaceQuarter(const ParameterList& g, const ContactDistance& contactDistance, Model& s) {
+  const int cells = g.get<int>("Azimuthal Cells"), level = g.get<int>("Mesh Refinement");
+  if (cells % 2 != 0)
+    throw InputError(
+        "Geometry/Azimuthal Cells = " + std::to_string(cells) +
+        " is odd; the quarter's core has half of them on each of its two outer sides: give an even number");
+  // The sphere's meridian mesh puts 16 fine cells (0.8 zone / 16 long) and 8 at least as long between the
+  // apex and 45 degrees: beyond zone = pi / 4.8 they pass 45 degrees and the mesh folds over itself, which a
+  // sweep about the axis cannot take.
+  const Real zone = g.get<double>("Contact Zone Size");
+  if (1.5 * 0.8 * zone > kPi / 4) {
+    std::ostringstream text;
+    text << "Geometry/Contact Zone Size = " << zone << " in 3D: the quarter model takes at most " << kPi / 4.8
+         << " (the sphere's fine and coarse cells from the apex must end at 45 degrees)";
+    throw InputError(text.str());
+  }
+  const int largest = mesh::largestQuarterCells(sphereSpec(g, 1.0), halfSpaceSpec(g)) >> level;
+  if (cells > largest) {
+    std::ostringstream zoneText;
+    zoneText << zone;
+    throw InputError("Geometry/Azimuthal Cells = " + std::to_string(cells) +
+                     " with Contact Zone Size = " + zoneText.str() + ": the core around the axis (radius about " +
+                     "Azimuthal Cells x Contact Zone Size / 40 sphere radii) would not turn into circles within the "
+                     "sphere; at most " +
+                     std::to_string(largest - largest % 2) + " cells fit, or a smaller Contact Zone Size");
+  }
+  const Real R0 = g.get<double>("Sphere Radius");
+  const Real rS0 = contactDistance();  // u = 0: undeformed surfaces r_S0 apart
+  s.mesh =
+      std::make_shared<Mesh>(mesh::sphereOnHalfSpaceQuarter(sphereSpec(g, R0 + rS0), halfSpaceSpec(g), cells << level));
+  s.interacting = true;
+  s.areaFactors = {R0, R0};
+  s.conditions = {{"driven", 2, 0.0, -1.0}};
+  s.initialMotion = {{"driven body", 2, 0.0, -1.0}};  // the sphere starts translated rigidly
+  s.force = {"driven", 2, -1.0};                      // P > 0: compressive
+  s.force.direction = {0.0, 0.0, -1.0};
+  s.balance = ForceResponse{"fixed", 2, 1.0};
+  s.balance->direction = {0.0, 0.0, 1.0};
+  s.contact = ContactGeometry{"apex", "lower apex", 0, 1, rS0};
+  reportWholeBody(s, Formulation::ThreeD);
+  for (int i = 0; i < 3; ++i) s.conditions.push_back({"fixed", i, 0.0, 0.0});
+  s.conditions.push_back({"symmetry x", 0, 0.0, 0.0});
+  s.conditions.push_back({"symmetry y", 1, 0.0, 0.0});
+}
+
 // Sphere (radius R0, apex at the equilibrium gap above y = 0) over a half-space
 // block or a second sphere; u moves the sphere's equator plane down.
 void buildSphereContact(const ParameterList& g, Formulation formulation, const ContactDistance& contactDistance,
                         Model& s) {
   const bool onSphere = g.get<std::string>("Type") == "sphere on sphere";
-  if (formulation == Formulation::ThreeD)
-    throw InputError("Geometry/Type = \"" + g.get<std::string>("Type") +
-                     "\" is built in plane strain or axisymmetry; Problem/Formulation = \"3D\" needs a mesh file");
+  if (formulation == Formulation::ThreeD && onSphere)
+    throw InputError(
+        "Geometry/Type = \"sphere on sphere\" is built in plane strain or axisymmetry; "
+        "Problem/Formulation = \"3D\" needs a mesh file (inputs/3d/two-spheres.xml)");
+  if (formulation == Formulation::ThreeD) return buildSphereOnHalfSpaceQuarter(g, contactDistance, s);
   const Real R0 = g.get<double>("Sphere Radius"), R2 = g.get<double>("Second Sphere Radius");
   const int level = g.get<int>("Mesh Refinement");
   const Real rS0 = contactDistance();  // u = 0: undeformed surfaces r_S0 apart
 
-  mesh::QuarterDiskSpec sphere;
-  sphere.radius = R0;
-  sphere.centerY = R0 + rS0;
-  sphere.refinement = level;
-  sphere.element = elementOrder(g);
+  mesh::QuarterDiskSpec sphere = sphereSpec(g, R0 + rS0);
   const Real zone = g.get<double>("Contact Zone Size");
-  sphere.fineAngle = 0.8 * zone;  // the fine cells of both bodies are then equally long
-  sphere.name = "sphere";
   auto m = std::make_shared<mesh::Mesh>(mesh::quarterDisk(sphere));
   auto& upper = m->nodeSets["upper body"];
   for (LocalIndex n = 0; n < m->numNodes(); ++n) upper.push_back(n);
@@ -292,12 +365,7 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, const C
     lower.name = "second sphere";
     mesh::append(*m, mesh::quarterDisk(lower), "lower ");
   } else {
-    mesh::HalfSpaceSpec h;
-    h.width = h.depth = g.get<double>("Half-Space Size") * R0;
-    h.fineLength = zone * R0;
-    h.refinement = level;
-    h.element = sphere.element;
-    mesh::Mesh block = mesh::halfSpaceBlock(h);
+    mesh::Mesh block = mesh::halfSpaceBlock(halfSpaceSpec(g));
     block.nodeSets["equator"] = block.nodeSets.at("bottom");  // the fixed far side
     mesh::append(*m, block, "lower ");
   }

@@ -142,13 +142,71 @@ TEST(Geometry, ElementOrderMakesQuadraticCellsOfEveryBuiltInGeometry) {
   EXPECT_THROW(io::validateDeck(g, *validParameters(), "Geometry/"), InputError);  // the validator: 1 .. 2
 }
 
-TEST(Geometry, TheBuiltInContactGeometriesAreRefusedIn3D) {
-  try {
-    modelOf(Teuchos::ParameterList(), Formulation::ThreeD);
-    ADD_FAILURE() << "a 3D sphere geometry was built";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("needs a mesh file"), std::string::npos) << e.what();
-  }
+TEST(Geometry, TheSphereOnAHalfSpaceIsAHexahedralQuarterModelIn3D) {
+  const Real rS0 = 0.0137;
+  Teuchos::ParameterList g;
+  g.set("Azimuthal Cells", 4);
+  const Model m = modelOf(g, Formulation::ThreeD, rS0);
+  EXPECT_TRUE(m.interacting);
+  EXPECT_EQ(m.mesh->dim, 3);
+  EXPECT_EQ(bodyNames(*m.mesh), (std::vector<std::string>{"sphere", "half-space"}));
+  for (const auto& b : m.mesh->blocks) EXPECT_EQ(b.type, CellType::Hex8);
+  ASSERT_TRUE(m.contact.has_value());
+  const LocalIndex apex = m.mesh->nodeSet(m.contact->upperApex).front();
+  const LocalIndex lower = m.mesh->nodeSet(m.contact->lowerApex).front();
+  EXPECT_NEAR(m.mesh->coord(apex, 2) - m.mesh->coord(lower, 2), rS0, 1e-14);
+  // the conventions of a gmsh mesh of the quarter (buildFromGmsh): "driven" moves by -u along z, the
+  // sphere starts with it, "fixed" is held, the planes x = 0 and y = 0 are symmetry planes, P is
+  // 4 x the resultant on "driven" (the whole sphere)
+  EXPECT_EQ(m.force.nodeSet, "driven");
+  EXPECT_EQ(m.force.component, 2);
+  EXPECT_EQ(m.force.sign, -1.0);
+  EXPECT_EQ(m.force.scale, 4.0);
+  EXPECT_EQ(m.force.direction, (std::vector<Real>{0.0, 0.0, -1.0}));
+  ASSERT_TRUE(m.balance.has_value());
+  EXPECT_EQ(m.balance->nodeSet, "fixed");
+  EXPECT_EQ(m.balance->scale, 4.0);
+  EXPECT_EQ(m.forceScale(3.0), 3.0);
+  std::vector<std::string> conditions;
+  for (const auto& c : m.conditions)
+    conditions.push_back(c.nodeSet + " " + std::to_string(c.component) + " " + std::to_string(c.scale));
+  EXPECT_EQ(conditions,
+            (std::vector<std::string>{"driven 2 -1.000000", "fixed 0 0.000000", "fixed 1 0.000000", "fixed 2 0.000000",
+                                      "symmetry x 0 0.000000", "symmetry y 1 0.000000"}));
+  ASSERT_EQ(m.initialMotion.size(), 1u);
+  EXPECT_EQ(m.initialMotion[0].nodeSet, "driven body");
+  EXPECT_EQ(m.report.size(), 1u);
+  // order 2 meshes (the interaction refuses them before the mesh is made: the app's contact distance)
+  g.set("Element Order", 2);
+  g.set("Serendipity", true);
+  const Model quadratic = modelOf(g, Formulation::ThreeD, rS0);
+  for (const auto& b : quadratic.mesh->blocks) EXPECT_EQ(b.type, CellType::Hex20);
+}
+
+TEST(Geometry, TheBuiltInGeometriesIn3DRefuseWhatTheyCannotBuild) {
+  Teuchos::ParameterList g;
+  g.set("Type", std::string("sphere on sphere"));
+  EXPECT_NE(inputErrorOf(g, Formulation::ThreeD).find("\"sphere on sphere\" is built in plane strain or axisymmetry"),
+            std::string::npos);
+  Teuchos::ParameterList odd;
+  odd.set("Azimuthal Cells", 7);
+  EXPECT_NE(inputErrorOf(odd, Formulation::ThreeD).find("Geometry/Azimuthal Cells = 7 is odd"), std::string::npos);
+  // the sphere's fine and coarse cells along the arc must end at 45 degrees: 1.5 x 0.8 zone <= pi / 4
+  Teuchos::ParameterList large;
+  large.set("Contact Zone Size", 0.66);
+  EXPECT_NE(inputErrorOf(large, Formulation::ThreeD)
+                .find("Geometry/Contact Zone Size = 0.66 in 3D: the quarter model "
+                      "takes at most 0.654"),
+            std::string::npos);
+  // the core's radius, Azimuthal Cells x Contact Zone Size / 40: 64 x 0.65 / 40 = 1.04 sphere radii
+  Teuchos::ParameterList wide;
+  wide.set("Azimuthal Cells", 64);
+  wide.set("Contact Zone Size", 0.65);
+  const std::string error = inputErrorOf(wide, Formulation::ThreeD);
+  EXPECT_NE(error.find("Geometry/Azimuthal Cells = 64 with Contact Zone Size = 0.65"), std::string::npos) << error;
+  EXPECT_NE(error.find("at most 22 cells fit"), std::string::npos) << error;
+  wide.set("Azimuthal Cells", 22);
+  EXPECT_EQ(inputErrorOf(wide, Formulation::ThreeD), "no InputError");
 }
 
 }  // namespace

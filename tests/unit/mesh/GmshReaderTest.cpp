@@ -10,12 +10,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "Isoparametric.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/fem/Dispatch.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
+#include "cgcm/mesh/Geometry.hpp"
 #include "cgcm/mesh/GmshReader.hpp"
-#include "Isoparametric.hpp"
 
 namespace cgcm::mesh {
 namespace {
@@ -314,6 +315,56 @@ TEST_F(Gmsh, TetSphereOnBlock) {
   for (LocalIndex n : m.nodeSet("symmetry x")) EXPECT_NEAR(m.coord(n, 0), 0.0, 1e-12);
   for (LocalIndex n : m.nodeSet("driven")) EXPECT_NEAR(m.coord(n, 2), zc, 1e-12);
   for (LocalIndex n : m.nodeSet("fixed")) EXPECT_NEAR(m.coord(n, 2), -1.0, 1e-12);
+}
+
+// The built-in 3D benchmark (a hexahedral quarter model) and the gmsh deck's tetrahedral one
+// (inputs/3d/sphere-on-half-space.xml) make the same model: bodies, node sets, conditions, the
+// responses P (4 x the quarter's) and P_lower, the start, u = 0 where the apexes are r_S0 apart.
+TEST_F(Gmsh, TheBuiltInQuarterModelHasTheConventionsOfTheGmshOne) {
+  const Real rS0 = 0.0127;
+  auto model = [&](Teuchos::ParameterList g) {
+    g.validateParametersAndSetDefaults(*validParameters());
+    return buildModel(g, Formulation::ThreeD, [rS0] { return rS0; });
+  };
+  Teuchos::ParameterList gmsh;
+  gmsh.set("Type", std::string("gmsh"));
+  gmsh.set("File", kMeshes + "/sphere-on-half-space-3d.geo");
+  const Model a = model(Teuchos::ParameterList()), b = model(gmsh);
+  EXPECT_EQ(bodyNames(*a.mesh), bodyNames(*b.mesh));
+  EXPECT_EQ(nodeSetNames(*a.mesh), nodeSetNames(*b.mesh));
+  auto conditions = [](const std::vector<DisplacementCondition>& list) {
+    std::vector<std::string> out;
+    for (const auto& c : list)
+      out.push_back(c.nodeSet + " " + std::to_string(c.component) + " " + std::to_string(c.scale));
+    return out;
+  };
+  EXPECT_EQ(conditions(a.conditions), conditions(b.conditions));
+  EXPECT_EQ(conditions(a.initialMotion), conditions(b.initialMotion));
+  for (const auto& [x, y] : {std::pair{a.force, b.force}, std::pair{*a.balance, *b.balance}}) {
+    EXPECT_EQ(x.nodeSet, y.nodeSet);
+    EXPECT_EQ(x.component, y.component);
+    EXPECT_EQ(x.sign, y.sign);
+    EXPECT_EQ(x.scale, 4.0);
+    EXPECT_EQ(x.scale, y.scale);
+    EXPECT_EQ(x.direction, y.direction);
+  }
+  EXPECT_EQ(a.report, b.report);
+  EXPECT_EQ(a.areaFactors, b.areaFactors);
+  EXPECT_TRUE(a.interacting && b.interacting);
+  ASSERT_TRUE(a.contact && b.contact);
+  EXPECT_EQ(a.contact->upperApex, b.contact->upperApex);
+  EXPECT_EQ(a.contact->lowerApex, b.contact->lowerApex);
+  EXPECT_EQ(a.contact->upperBody, b.contact->upperBody);
+  EXPECT_EQ(a.contact->lowerBody, b.contact->lowerBody);
+  // u = 0: the built-in sphere is drawn r_S0 above the half-space, the gmsh one is moved there by the drive's offset
+  auto gapAtZero = [](const Model& m) {
+    const Real offset = m.conditions.front().offset;
+    return m.mesh->coord(m.mesh->nodeSet("apex").front(), 2) + offset -
+           m.mesh->coord(m.mesh->nodeSet("lower apex").front(), 2);
+  };
+  EXPECT_NEAR(gapAtZero(a), rS0, 1e-15);
+  EXPECT_NEAR(gapAtZero(b), rS0, 1e-15);
+  EXPECT_EQ(a.conditions.front().offset, 0.0);
 }
 
 // Element order 2: gmsh's quadratic cells, their nodes on the curved geometry (Mesh.SecondOrderLinear = 0).

@@ -3,15 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
 
+#include "Isoparametric.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
-#include "cgcm/mesh/Subdomain.hpp"
 #include "cgcm/mesh/Mirror.hpp"
 #include "cgcm/mesh/Overlap.hpp"
-#include "Isoparametric.hpp"
+#include "cgcm/mesh/Subdomain.hpp"
 
 namespace cgcm::mesh {
 namespace {
@@ -307,6 +311,260 @@ TEST(Benchmark, GradingsFillTheirLength) {
   EXPECT_EQ(f.back(), 8.0);
   for (std::size_t k = 21; k < f.size(); ++k) EXPECT_GT(f[k] - f[k - 1], f[k - 1] - f[k - 2] - 1e-12);
   EXPECT_THROW(fineThenGeometric(1.0, 2.0, 4, 4), InputError);
+}
+
+// The benchmark's quarter model in 3D: the sphere (centre at height R + gap) and the half-space.
+struct QuarterModel {
+  QuarterDiskSpec sphere;
+  HalfSpaceSpec halfSpace;
+  int quarterCells = 8;
+  Mesh mesh() const { return sphereOnHalfSpaceQuarter(sphere, halfSpace, quarterCells); }
+};
+
+QuarterModel quarterModel(int level, int quarterCells, ElementOrder element = {}) {
+  QuarterModel q;
+  q.sphere.radius = 1.0;
+  q.sphere.centerY = 1.01;
+  q.sphere.refinement = q.halfSpace.refinement = level;
+  q.sphere.element = q.halfSpace.element = element;
+  q.sphere.fineAngle = 0.4;
+  q.quarterCells = quarterCells << level;
+  return q;
+}
+
+// Faces of a body's cells (corner keys) and how many cells use each.
+std::map<std::vector<LocalIndex>, int> faceUses(const Mesh& m, int body) {
+  std::map<std::vector<LocalIndex>, int> uses;
+  for (const auto& b : m.blocks) {
+    if (b.body != body) continue;
+    const int npc = nodesPerCell(b.type), corners = facetCornerCount(cellTypeInfo(b.type));
+    for (LocalIndex c = 0; c < b.numCells(); ++c)
+      for (const auto& f : localFacets(b.type)) {
+        std::vector<LocalIndex> key;
+        for (int a = 0; a < corners; ++a) key.push_back(b.connectivity[std::size_t(c) * npc + f[a]]);
+        std::sort(key.begin(), key.end());
+        ++uses[key];
+      }
+  }
+  return uses;
+}
+
+double distance(const Mesh& m, LocalIndex n, const double (&c)[3]) {
+  return std::sqrt(std::pow(m.coord(n, 0) - c[0], 2) + std::pow(m.coord(n, 1) - c[1], 2) +
+                   std::pow(m.coord(n, 2) - c[2], 2));
+}
+
+TEST(Benchmark, QuarterModelCellsArePositiveAndTheSphereConverges) {
+  // The sphere body is a quarter of the lower hemisphere, pi R^3 / 6. Its surface is inscribed
+  // (flat facets between nodes on the sphere): the volume misses the caps over the facets, about
+  // (surface area) x (2/3 of the chord's sagitta R d^2 / 8) = (pi / 2) x (pi / 16)^2 / 12 = 5.0e-3
+  // for the azimuthal cells at 8 over the quarter (the meridian's finer ones add little). Measured:
+  // 4.34e-3 at level 0 and 1.09e-3 at level 1 (each level halves every cell: / 4, second order).
+  double previous = 1.0;
+  for (int level : {0, 1}) {
+    SCOPED_TRACE("level " + std::to_string(level));
+    const Mesh m = quarterModel(level, 8).mesh();
+    for (const auto& b : m.blocks) EXPECT_EQ(b.type, CellType::Hex8);
+    const auto measure = testing::isoparametricMeasure(m);  // every Gauss point and node of every cell
+    EXPECT_GT(measure.smallestJacobian, 0.0);
+    const double error = std::abs(measure.perBody[0] - cgcm::kPi / 6);
+    std::printf("[ quarter model ] level %d: %d nodes, %d cells, sphere volume error %.3e\n", level, int(m.numNodes()),
+                int(m.numCells()), error);
+    EXPECT_LT(error, 5e-3 / (1 << (2 * level)));
+    EXPECT_LT(error, 0.3 * previous);
+    previous = error;
+    // the half-space: a quarter cylinder of radius and depth 8 whose flat faces are the prism over the
+    // inscribed polygon of its 8 x 2^level equal sides: its volume exactly
+    const int sides = 8 << level;
+    EXPECT_NEAR(measure.perBody[1], 8 * sides * 0.5 * 64 * std::sin(cgcm::kPi / 2 / sides), 1e-9 * 512);
+    // the model's size without building it (the size check before any work)
+    const MeshSize size = sphereOnHalfSpaceQuarterSize(level, 8 << level);
+    EXPECT_EQ(size.nodes, m.numNodes());
+    EXPECT_EQ(size.cells, m.numCells());
+  }
+  for (int cells : {2, 4, 16}) {
+    const QuarterModel q = quarterModel(0, cells);
+    const Mesh m = q.mesh();
+    EXPECT_GT(testing::isoparametricMeasure(m).smallestJacobian, 0.0) << cells;
+    EXPECT_EQ(sphereOnHalfSpaceQuarterSize(0, cells).nodes, m.numNodes());
+  }
+  EXPECT_THROW(quarterModel(0, 3).mesh(), InputError);
+  EXPECT_THROW(quarterModel(0, 40).mesh(), InputError);  // the core would not turn into circles in the sphere
+}
+
+TEST(Benchmark, QuarterModelIsConformingWithOutwardSurfacesOnTheSphere) {
+  const QuarterModel q = quarterModel(0, 8);
+  const Mesh m = q.mesh();
+  const double centre[3] = {0.0, 0.0, 1.01};
+  const auto on = [&](const std::vector<LocalIndex>& f, auto&& test) { return std::all_of(f.begin(), f.end(), test); };
+  for (int body : {0, 1}) {
+    SCOPED_TRACE("body " + std::to_string(body));
+    // every face is shared by two cells, or lies on the body's boundary
+    int boundary = 0, curved = 0;
+    for (const auto& [face, count] : faceUses(m, body)) {
+      EXPECT_LE(count, 2);
+      if (count == 2) continue;
+      ++boundary;
+      const bool plane = on(face, [&](LocalIndex n) { return m.coord(n, 0) == 0.0; }) ||
+                         on(face, [&](LocalIndex n) { return m.coord(n, 1) == 0.0; });
+      const bool flat =
+          body == 0 ? on(face, [&](LocalIndex n) { return std::abs(m.coord(n, 2) - 1.01) < 1e-14; })
+                    : on(face, [&](LocalIndex n) { return m.coord(n, 2) == -8.0; }) ||
+                          on(face, [&](LocalIndex n) { return std::hypot(m.coord(n, 0), m.coord(n, 1)) > 8 - 1e-12; });
+      const bool surface = body == 0
+                               ? on(face, [&](LocalIndex n) { return std::abs(distance(m, n, centre) - 1.0) < 1e-14; })
+                               : on(face, [&](LocalIndex n) { return m.coord(n, 2) == 0.0; });
+      EXPECT_TRUE(plane || flat || surface) << "an inner face used by one cell";
+      curved += surface && !plane;
+    }
+    // the interacting surface: the curved face (the top), all of it, outward
+    const Surface& s = m.surfaces[std::size_t(body)];
+    ASSERT_EQ(s.nodesPerFacet, 4);
+    EXPECT_EQ(s.numFacets(), curved);
+    EXPECT_GT(boundary, curved);
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      const LocalIndex* n = &s.facets[std::size_t(f) * 4];
+      double a[3], b[3], normal[3], mid[3] = {}, cell[3] = {};
+      for (int i = 0; i < 3; ++i) {
+        a[i] = m.coord(n[1], i) - m.coord(n[0], i);
+        b[i] = m.coord(n[3], i) - m.coord(n[0], i);
+        for (int k = 0; k < 4; ++k) mid[i] += m.coord(n[k], i) / 4;
+      }
+      normal[0] = a[1] * b[2] - a[2] * b[1], normal[1] = a[2] * b[0] - a[0] * b[2],
+      normal[2] = a[0] * b[1] - a[1] * b[0];
+      LocalIndex c = s.facetCells[f];
+      std::size_t bi = 0;
+      while (c >= m.blocks[bi].numCells()) c -= m.blocks[bi++].numCells();
+      for (int k = 0; k < 8; ++k)
+        for (int i = 0; i < 3; ++i) cell[i] += m.coord(m.blocks[bi].connectivity[std::size_t(c) * 8 + k], i) / 8;
+      double away = 0.0, outward = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        away += normal[i] * (mid[i] - cell[i]);
+        outward += normal[i] * (body == 0 ? mid[i] - centre[i] : (i == 2 ? 1.0 : 0.0));
+      }
+      EXPECT_GT(away, 0.0);
+      EXPECT_GT(outward, 0.0);
+      for (int k = 0; k < 4; ++k)
+        if (body == 0) {
+          EXPECT_NEAR(distance(m, n[k], centre), 1.0, 1e-15);  // on the sphere to round-off
+        } else {
+          EXPECT_EQ(m.coord(n[k], 2), 0.0);
+        }
+    }
+  }
+}
+
+TEST(Benchmark, QuarterModelHasTheGmshNodeSetsAndTheMeridianOnItsPlanes) {
+  const QuarterModel q = quarterModel(0, 8);
+  const Mesh m = q.mesh();
+  std::vector<std::string> names;
+  for (const auto& [name, nodes] : m.nodeSets) names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"apex", "contact:half-space", "contact:sphere", "driven", "driven body",
+                                             "fixed", "lower apex", "symmetry x", "symmetry y"}));
+  EXPECT_EQ(bodyNames(m), (std::vector<std::string>{"sphere", "half-space"}));
+  std::vector<int> bodyOf(std::size_t(m.numNodes()), -1);
+  for (const auto& b : m.blocks)
+    for (LocalIndex n : b.connectivity) bodyOf[n] = b.body;
+  const LocalIndex sphereNodes = LocalIndex(std::count(bodyOf.begin(), bodyOf.end(), 0));
+  EXPECT_EQ(m.nodeSet("driven body").size(), std::size_t(sphereNodes));
+  for (LocalIndex n : m.nodeSet("driven body")) EXPECT_EQ(bodyOf[n], 0);
+  // the symmetry planes: every node on x = 0 (y = 0), and no other
+  for (int axis : {0, 1}) {
+    const auto& set = m.nodeSet(axis == 0 ? "symmetry x" : "symmetry y");
+    std::vector<LocalIndex> onPlane;
+    for (LocalIndex n = 0; n < m.numNodes(); ++n)
+      if (m.coord(n, axis) == 0.0) onPlane.push_back(n);
+    EXPECT_EQ(set, onPlane);
+  }
+  // driven: the sphere's equator plane; fixed: the half-space's bottom
+  std::vector<LocalIndex> equator, bottom;
+  for (LocalIndex n = 0; n < m.numNodes(); ++n) {
+    if (bodyOf[n] == 0 && std::abs(m.coord(n, 2) - 1.01) < 1e-14) equator.push_back(n);
+    if (bodyOf[n] == 1 && m.coord(n, 2) == -8.0) bottom.push_back(n);
+  }
+  EXPECT_EQ(m.nodeSet("driven"), equator);
+  EXPECT_EQ(m.nodeSet("fixed"), bottom);
+  const LocalIndex apex = m.nodeSet("apex").at(0), lower = m.nodeSet("lower apex").at(0);
+  EXPECT_EQ(m.nodeSet("apex").size(), 1u);
+  EXPECT_EQ(m.nodeSet("lower apex").size(), 1u);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(m.coord(apex, i), 0.0);
+    EXPECT_EQ(m.coord(lower, i), 0.0);
+  }
+  EXPECT_NEAR(m.coord(apex, 2), 0.01, 1e-15);
+  EXPECT_EQ(m.coord(lower, 2), 0.0);
+  // either plane holds the meridian meshes node for node (up to the round-off of putting them on the sphere)
+  auto points = [](const Mesh& mm, int from, int to, auto&& pick) {
+    std::vector<std::array<double, 2>> p;
+    for (LocalIndex n = from; n < to; ++n)
+      if (pick(n)) p.push_back({mm.coord(n, 0) + mm.coord(n, 1) * (mm.dim == 3), mm.coord(n, mm.dim - 1)});
+    std::sort(p.begin(), p.end());
+    return p;
+  };
+  const Mesh disk = quarterDisk(q.sphere), block = halfSpaceBlock(q.halfSpace);
+  for (int axis : {0, 1}) {
+    auto onPlane = [&](LocalIndex n) { return m.coord(n, axis) == 0.0; };
+    auto all = [](LocalIndex) { return true; };
+    for (const auto& [swept, meridian] :
+         {std::pair{points(m, 0, sphereNodes, onPlane), points(disk, 0, disk.numNodes(), all)},
+          std::pair{points(m, sphereNodes, m.numNodes(), onPlane), points(block, 0, block.numNodes(), all)}}) {
+      ASSERT_EQ(swept.size(), meridian.size());
+      for (std::size_t k = 0; k < swept.size(); ++k)
+        for (int i = 0; i < 2; ++i) EXPECT_NEAR(swept[k][i], meridian[k][i], 1e-15);
+    }
+  }
+}
+
+TEST(Benchmark, QuarterModelIsAsFineAtTheApexAsTheMeridianMesh) {
+  // the cells at the apex and under it in the half-space: as long as the meridian mesh's fine cells
+  // (0.8 zone / 16 on the sphere, zone / 20 on the half-space) in every direction, across the core too
+  for (Real zone : {0.5, 0.1}) {
+    QuarterModel q = quarterModel(0, 8);
+    q.sphere.fineAngle = 0.8 * zone;
+    q.halfSpace.fineLength = zone;
+    const Mesh m = q.mesh();
+    for (const auto& [set, h] : {std::pair{"apex", 0.8 * zone / 16}, std::pair{"lower apex", zone / 20}}) {
+      const LocalIndex tip = m.nodeSet(set).at(0);
+      double longest = 0.0, shortest = 1e300;
+      for (const auto& b : m.blocks)
+        for (LocalIndex c = 0; c < b.numCells(); ++c) {
+          const LocalIndex* h8 = &b.connectivity[std::size_t(c) * 8];
+          if (std::find(h8, h8 + 8, tip) == h8 + 8) continue;
+          for (const auto& e : cellTypeInfo(CellType::Hex8).facets)
+            for (int k = 0; k < 4; ++k) {
+              double d2 = 0.0;
+              for (int i = 0; i < 3; ++i) d2 += std::pow(m.coord(h8[e[k]], i) - m.coord(h8[e[(k + 1) % 4]], i), 2);
+              longest = std::max(longest, std::sqrt(d2)), shortest = std::min(shortest, std::sqrt(d2));
+            }
+        }
+      EXPECT_LT(longest, 1.1 * h) << set << ", zone " << zone;
+      EXPECT_GT(shortest, 0.9 * h) << set << ", zone " << zone;
+    }
+  }
+}
+
+TEST(Elevate, QuarterModelPutsTheSphereFacesNodesOnTheSphere) {
+  const double linear = std::abs(testing::isoparametricMeasure(quarterModel(0, 4).mesh()).perBody[0] - cgcm::kPi / 6);
+  const double centre[3] = {0.0, 0.0, 1.01};
+  for (bool serendipity : {false, true}) {
+    SCOPED_TRACE(serendipity ? "HEX20" : "HEX27");
+    const Mesh m = quarterModel(0, 4, {2, serendipity}).mesh();
+    for (const auto& b : m.blocks) EXPECT_EQ(b.type, serendipity ? CellType::Hex20 : CellType::Hex27);
+    const auto measure = testing::isoparametricMeasure(m);
+    EXPECT_GT(measure.smallestJacobian, 0.0);
+    const Surface& s = m.surfaces[0];
+    ASSERT_EQ(s.nodesPerFacet, serendipity ? 8 : 9);
+    for (LocalIndex n : s.facets) EXPECT_NEAR(distance(m, n, centre), 1.0, 1e-15);
+    for (LocalIndex n : m.surfaces[1].facets) EXPECT_EQ(m.coord(n, 2), 0.0);
+    // curved faces hold the sphere far better than flat ones
+    const double error = std::abs(measure.perBody[0] - cgcm::kPi / 6);
+    std::printf("[ quarter model ] sphere volume error: linear %.3e, %s %.3e\n", linear,
+                serendipity ? "HEX20" : "HEX27", error);
+    EXPECT_LT(error, 0.02 * linear);
+    for (LocalIndex n : m.nodeSet("symmetry x")) EXPECT_EQ(m.coord(n, 0), 0.0);
+    for (LocalIndex n : m.nodeSet("driven")) EXPECT_NEAR(m.coord(n, 2), 1.01, 1e-14);
+    for (LocalIndex n : m.nodeSet("fixed")) EXPECT_EQ(m.coord(n, 2), -8.0);
+  }
 }
 
 // Two bodies: a rectangle and a second one at (x0, y0) with its own size and cells.

@@ -3,6 +3,8 @@
 // meridian half-plane (x = radial coordinate >= 0, y = axis), usable both
 // axisymmetrically (spheres) and in plane strain (cylinders, with x = 0 a
 // symmetry line). Cells are graded towards the contact zone at x = 0.
+// In 3D the same meridian meshes are swept about the axis over a quarter
+// (sweepQuarter, sphereOnHalfSpaceQuarter).
 #include "cgcm/mesh/Generators.hpp"
 
 namespace cgcm::mesh {
@@ -27,11 +29,18 @@ struct QuarterDiskSpec {
   ElementOrder element;
 };
 
+/// Lines of nodes of a meridian mesh, each from its node on the axis (x = 0) outwards, x
+/// increasing, ordered along the axis; consecutive rows bound the cells next to the axis
+/// (what sweepQuarter's core is built on).
+using MeridianRows = std::vector<std::vector<LocalIndex>>;
+
 /// Quarter disk as an O-grid (a core rectangle and two curved patches).
 /// Node sets: "axis" (x = 0), "equator" (the flat side through the centre),
 /// "apex" (the node on the axis on the curved side). Order 2: the nodes of
 /// the edges on the arc lie on the circle (elevate), the other edges are straight.
-Mesh quarterDisk(const QuarterDiskSpec& spec);
+/// `rows` (order 1 only): the core rectangle's rows from the equator, then the curved
+/// patch's layers up to the arc.
+Mesh quarterDisk(const QuarterDiskSpec& spec, MeridianRows* rows = nullptr);
 
 struct HalfSpaceSpec {
   Real width = 8.0;       ///< radial extent
@@ -47,6 +56,45 @@ struct HalfSpaceSpec {
 
 /// Rectangle [0, width] x [topY - depth, topY], graded towards (0, topY).
 /// Node sets: "axis", "bottom", "top", "side", "apex" (the node at (0, topY)).
-Mesh halfSpaceBlock(const HalfSpaceSpec& spec);
+/// `rows` (order 1 only): its rows of nodes, bottom to top.
+Mesh halfSpaceBlock(const HalfSpaceSpec& spec, MeridianRows* rows = nullptr);
+
+/// The largest core sweepQuarter can build on these rows: every row must reach
+/// twice the radius of its node `coreCells` from the axis, where the rings have
+/// turned from the core's kite into circles. 0 if none fits.
+int largestSweepCore(const Mesh& meridian, const MeridianRows& rows);
+
+/// A Quad4 meridian mesh (x >= 0 the radius, y the axis) swept about its axis over the
+/// quarter x, y >= 0 into Hex8 cells: the meridian point (r, y) goes to (r cos phi, r sin phi, y).
+/// Near the axis a butterfly core replaces the wedges a plain sweep would collapse there: in
+/// every row, the nodes 0 .. coreCells span a coreCells x coreCells grid whose sides on the
+/// planes x = 0 and y = 0 are the row itself and whose outer sides are a kite; outward, the
+/// rings of 2 coreCells cells turn from that kite into circles by twice its radius. The planes
+/// y = 0 and x = 0 hold the meridian mesh node for node. Each node set of the meridian mesh
+/// becomes the set of its nodes' images (and of the core's inner nodes of rows it holds whole);
+/// "symmetry x" and "symmetry y" are the nodes on x = 0 and y = 0. Blocks keep their names and
+/// bodies. Throws InputError if coreCells is not in 1 .. largestSweepCore.
+Mesh sweepQuarter(const Mesh& meridian, const MeridianRows& rows, int coreCells);
+
+/// The benchmark in 3D as a quarter model of Hex8 (order 2: Hex27 or Hex20) cells, the meridian
+/// meshes of `sphere` and `halfSpace` (a quarter cylinder of radius halfSpace.width) swept by
+/// sweepQuarter with `quarterCells` / 2 core cells (quarterCells cells over the quarter's 90
+/// degrees), the vertical axis z. The sphere's surface nodes (order 2: its edge and face nodes
+/// too) lie on the sphere. Bodies "sphere" (0) and "half-space" (1); node sets as a gmsh mesh of
+/// the benchmark has them (meshes/README.md): "driven" (the sphere's equator plane), "fixed"
+/// (the half-space's bottom), "symmetry x", "symmetry y", "apex", "lower apex", and "driven body"
+/// (every node of the sphere), "contact:sphere" and "contact:half-space" (the nodes of the surfaces:
+/// the sphere's curved face, the half-space's top).
+Mesh sphereOnHalfSpaceQuarter(const QuarterDiskSpec& sphere, const HalfSpaceSpec& halfSpace, int quarterCells);
+
+/// The most cells over the quarter's 90 degrees sphereOnHalfSpaceQuarter can take with these
+/// meridian meshes (2 x largestSweepCore of either).
+int largestQuarterCells(const QuarterDiskSpec& sphere, const HalfSpaceSpec& halfSpace);
+
+/// Nodes and cells of sphereOnHalfSpaceQuarter at order 1, without building it (the size check).
+struct MeshSize {
+  double nodes = 0.0, cells = 0.0;
+};
+MeshSize sphereOnHalfSpaceQuarterSize(int refinement, int quarterCells);
 
 }  // namespace cgcm::mesh

@@ -46,6 +46,11 @@ Mesh box(const BoxSpec& spec);
 /// edge's midpoint and may be moved, e.g. onto the curved boundary the edge stands for.
 using EdgeNodePlacement = std::function<void(LocalIndex a, LocalIndex b, Real* x)>;
 
+/// Where elevate puts the node of a hexahedron's face with corners `corners` (4, sorted): x holds the
+/// transfinite blend of the face's edge nodes and may be moved, e.g. onto the curved surface the face
+/// stands for.
+using FaceNodePlacement = std::function<void(const std::vector<LocalIndex>& corners, Real* x)>;
+
 /// Makes a mesh of linear cells quadratic, in place: Quad4 -> Quad9 (serendipity: Quad8), Hex8
 /// -> Hex27 (Hex20), Tet4 -> Tet10. Each edge gets one node, shared by its cells, at its
 /// midpoint or where `place` moves it; each quadrilateral face and each quadrilateral or
@@ -53,7 +58,10 @@ using EdgeNodePlacement = std::function<void(LocalIndex a, LocalIndex b, Real* x
 /// of its corners and edge nodes (the centre of a straight cell). The existing nodes keep their
 /// indices; the new ones follow. A new node joins every node set that holds all the corners of
 /// its edge, face or cell. The surfaces are rebuilt (buildSurfaces): elevate before trimming them.
-void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place = {});
+/// `placeFace` (3D) may move the face nodes after the blend; a cell's node then moves by half the
+/// sum of its faces' moves (the transfinite blend of the cell's faces).
+void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place = {},
+             const FaceNodePlacement& placeFace = {});
 
 /// Appends `other` to `mesh` as new bodies (body ids shifted by mesh.numBodies);
 /// node-set names of `other` get `prefix` prepended. Dimensions must agree.
