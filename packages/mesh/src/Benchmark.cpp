@@ -54,6 +54,12 @@ int scaled(int n, int level) { return n << level; }
 
 std::vector<Real> geometric(Real length, Real first, int cells) {
   if (cells < 1 || !(first > 0.0) || !(length > 0.0)) throw InputError("geometric grading: invalid arguments");
+  std::vector<Real> x(cells + 1, 0.0);
+  if (cells * first >= length) {  // no room to grow (see fineThenGeometric): even cells, shorter than `first`
+    for (int k = 1; k <= cells; ++k) x[k] = length * k / cells;
+    x[cells] = length;
+    return x;
+  }
   const Real q = solveRatio(
       [&](Real r) {
         Real s = 0.0, t = first;
@@ -61,7 +67,6 @@ std::vector<Real> geometric(Real length, Real first, int cells) {
         return s;
       },
       length);
-  std::vector<Real> x(cells + 1, 0.0);
   Real h = first;
   for (int k = 1; k <= cells; ++k, h *= q) x[k] = x[k - 1] + h;
   x[cells] = length;
@@ -79,6 +84,13 @@ std::vector<Real> fineThenGeometric(Real length, Real fineLength, int fineCells,
     return x;
   }
   const Real rest = length - fineLength;
+  if (coarseCells * h >= rest) {
+    // no room to grow: cells of the fine size would run past `length` (and the last one, cut back
+    // to it, would fold the mesh), so the rest is split evenly into cells no longer than the fine ones
+    for (int k = 1; k <= coarseCells; ++k) x.push_back(fineLength + rest * k / coarseCells);
+    x.back() = length;
+    return x;
+  }
   const Real q = solveRatio(
       [&](Real r) {
         Real s = 0.0, t = h;

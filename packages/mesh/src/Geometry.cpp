@@ -296,16 +296,7 @@ void buildSphereOnHalfSpaceQuarter(const ParameterList& g, const ContactDistance
     throw InputError(
         "Geometry/Azimuthal Cells = " + std::to_string(cells) +
         " is odd; the quarter's core has half of them on each of its two outer sides: give an even number");
-  // The sphere's meridian mesh puts 16 fine cells (0.8 zone / 16 long) and 8 at least as long between the
-  // apex and 45 degrees: beyond zone = pi / 4.8 they pass 45 degrees and the mesh folds over itself, which a
-  // sweep about the axis cannot take.
   const Real zone = g.get<double>("Contact Zone Size");
-  if (1.5 * 0.8 * zone > kPi / 4) {
-    std::ostringstream text;
-    text << "Geometry/Contact Zone Size = " << zone << " in 3D: the quarter model takes at most " << kPi / 4.8
-         << " (the sphere's fine and coarse cells from the apex must end at 45 degrees)";
-    throw InputError(text.str());
-  }
   const int largest = mesh::largestQuarterCells(sphereSpec(g, 1.0), halfSpaceSpec(g)) >> level;
   if (cells > largest) {
     std::ostringstream zoneText;

@@ -311,6 +311,31 @@ TEST(Benchmark, GradingsFillTheirLength) {
   EXPECT_EQ(f.back(), 8.0);
   for (std::size_t k = 21; k < f.size(); ++k) EXPECT_GT(f[k] - f[k - 1], f[k - 1] - f[k - 2] - 1e-12);
   EXPECT_THROW(fineThenGeometric(1.0, 2.0, 4, 4), InputError);
+  const auto even = geometric(1.0, 0.085, 14);  // the sphere's layers at zone 0.85: 14 x 0.085 > 1
+  for (std::size_t k = 1; k < even.size(); ++k) EXPECT_NEAR(even[k] - even[k - 1], 1.0 / 14, 1e-12);
+  // fine cells too long for the coarse ones to grow (the sphere's arc at Contact Zone Size 0.85):
+  // the coarse cells are shorter, evenly spread, and the positions still increase to the end
+  const auto tight = fineThenGeometric(cgcm::kPi / 4, 0.68, 16, 8);
+  EXPECT_NEAR(tight[16], 0.68, 1e-12);
+  EXPECT_EQ(tight.back(), cgcm::kPi / 4);
+  for (std::size_t k = 17; k < tight.size(); ++k) {
+    EXPECT_GT(tight[k] - tight[k - 1], 0.0) << k;
+    EXPECT_LE(tight[k] - tight[k - 1], 0.68 / 16 + 1e-12) << k;
+  }
+}
+
+TEST(Benchmark, QuarterDiskDoesNotFoldOverAnyContactZone) {
+  // A cell turned inside out would be flipped by the generator and its area counted twice: the cells
+  // must tile the quarter disk. What they miss is the chords' segments, the sum of d theta^3 / 12 over
+  // the arc's cells: measured 6.9e-3 at zone 0.02 (its coarsest arc cells are the longest), 0.7e-3 to
+  // 1.1e-3 from 0.3 to 0.85 (before this was fixed, 0.85 folded and overlapped by 7.6e-2).
+  for (double zone : {0.02, 0.3, 0.5, 0.65, 0.66, 0.75, 0.85}) {
+    QuarterDiskSpec s;
+    s.fineAngle = 0.8 * zone;  // as Geometry/Contact Zone Size sets it
+    const auto [area, smallest] = cellMeasures(quarterDisk(s));
+    EXPECT_GT(smallest, 0.0) << "zone " << zone;
+    EXPECT_NEAR(area, cgcm::kPi / 4, zone < 0.1 ? 8e-3 : 2e-3) << "zone " << zone;
+  }
 }
 
 // The benchmark's quarter model in 3D: the sphere (centre at height R + gap) and the half-space.
@@ -390,6 +415,18 @@ TEST(Benchmark, QuarterModelCellsArePositiveAndTheSphereConverges) {
   }
   EXPECT_THROW(quarterModel(0, 3).mesh(), InputError);
   EXPECT_THROW(quarterModel(0, 40).mesh(), InputError);  // the core would not turn into circles in the sphere
+}
+
+TEST(Benchmark, QuarterModelOfTheWidestContactZoneIsValid) {
+  // Contact Zone Size 0.85 (fine angle 0.68): the meridian's coarse cells no longer grow (they are
+  // even and shorter than the fine ones), so the swept cells stay positive and tile the quarter sphere
+  // as well as the default zone's (volume error 4.34e-3 there, bound 5e-3 as above).
+  QuarterModel q = quarterModel(0, 8);
+  q.sphere.fineAngle = 0.8 * 0.85;
+  const Mesh m = q.mesh();
+  const auto measure = testing::isoparametricMeasure(m);
+  EXPECT_GT(measure.smallestJacobian, 0.0);
+  EXPECT_LT(std::abs(measure.perBody[0] - cgcm::kPi / 6), 5e-3);
 }
 
 TEST(Benchmark, QuarterModelIsConformingWithOutwardSurfacesOnTheSphere) {

@@ -11,10 +11,13 @@ namespace cgcm::mesh {
 
 /// One-dimensional node distribution on [0, length]: `fineCells` cells of
 /// equal size up to `fineLength`, then `coarseCells` cells growing
-/// geometrically to `length`. Returns the fineCells + coarseCells + 1 node positions.
+/// geometrically to `length` (of equal size, shorter than the fine ones, where
+/// `length` leaves them no room to grow). Returns the fineCells + coarseCells + 1
+/// increasing node positions.
 std::vector<Real> fineThenGeometric(Real length, Real fineLength, int fineCells, int coarseCells);
 /// Node distribution on [0, length] whose first cell has size `first` and whose
-/// cells then grow geometrically (cells + 1 positions).
+/// cells then grow geometrically (cells + 1 positions); even cells, shorter than
+/// `first`, where `cells` cells of `first` would already pass `length`.
 std::vector<Real> geometric(Real length, Real first, int cells);
 
 struct QuarterDiskSpec {
