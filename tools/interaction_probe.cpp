@@ -12,9 +12,10 @@
 //
 // RUN_DIR: the output folder of a run (its parameters.xml and checkpoint.bin:
 // the last accepted state). Prints the resultant on every body per formulation;
-// CSV (optional): per surface node of every body, its reference and current
-// coordinates and the force on it by each formulation. 2D and axisymmetric
-// (forces per unit thickness, or totals over the ring), and 3D. One rank.
+// CSV (optional): per node that any formulation loads, its body, whether it is
+// on the surface, its reference and current coordinates and the force on it by
+// each formulation. 2D and axisymmetric (forces per unit thickness, or totals
+// over the ring), and 3D. One rank.
 // Exit code 2: bad usage or input.
 #include <Tpetra_Core.hpp>
 
@@ -22,7 +23,6 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -130,22 +130,30 @@ int run(const std::string& dir, const std::string& csv) {
   if (!out) throw cgcm::InputError("cannot write " + csv);
   out.precision(12);
   const char* axes[] = {"x", "y", "z"};
-  out << "body,node";
+  out << "body,node,surface";
   for (int i = 0; i < dim; ++i) out << ",X" << axes[i];
   for (int i = 0; i < dim; ++i) out << ",x" << axes[i];
   for (const auto& v : variants)
     for (int i = 0; i < dim; ++i) out << "," << v.name << "_f" << axes[i];
   out << "\n";
-  for (const auto& surface : mesh.surfaces) {
-    const std::set<LocalIndex> nodes(surface.facets.begin(), surface.facets.end());
-    for (LocalIndex n : nodes) {
-      out << surface.body << "," << n;
-      for (int i = 0; i < dim; ++i) out << "," << mesh.coord(n, i);
-      for (int i = 0; i < dim; ++i) out << "," << coords[std::size_t(n) * dim + i];
-      for (const auto& v : variants)
-        for (int i = 0; i < dim; ++i) out << "," << v.force[std::size_t(n) * dim + i];
-      out << "\n";
-    }
+  // every node some formulation puts a force on: Method 1's forces act on the nodes inside the bodies too
+  std::vector<int> bodyOf(numNodes, -1);
+  std::vector<char> onSurface(numNodes, 0);
+  for (const auto& block : mesh.blocks)
+    for (LocalIndex n : block.connectivity) bodyOf[n] = block.body;
+  for (const auto& surface : mesh.surfaces)
+    for (LocalIndex n : surface.facets) onSurface[n] = 1;
+  for (std::size_t n = 0; n < numNodes; ++n) {
+    bool loaded = false;
+    for (const auto& v : variants)
+      for (int i = 0; i < dim; ++i) loaded = loaded || v.force[n * dim + i] != 0.0;
+    if (!loaded) continue;
+    out << bodyOf[n] << "," << n << "," << int(onSurface[n]);
+    for (int i = 0; i < dim; ++i) out << "," << mesh.coord(LocalIndex(n), i);
+    for (int i = 0; i < dim; ++i) out << "," << coords[n * dim + i];
+    for (const auto& v : variants)
+      for (int i = 0; i < dim; ++i) out << "," << v.force[n * dim + i];
+    out << "\n";
   }
   return 0;
 }
