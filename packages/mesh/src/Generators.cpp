@@ -264,28 +264,30 @@ void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place, const
   }
   // face and cell nodes: the Coons blend adds 2^(1 - d) times the sum of the moves of the edge
   // nodes of their d-dimensional face or cell (1/2 for a quadrilateral, 1/4 for a hexahedron)
-  std::vector<char> blended(cornersOf.size(), 0);
-  for (const auto& b : mesh.blocks) {
-    const CellTypeInfo& row = cellTypeInfo(b.type);
-    const int nc = cornerCount(row), nq = row.numNodes;
-    for (LocalIndex c = 0; c < b.numCells(); ++c) {
-      const LocalIndex* nodes = &b.connectivity[std::size_t(c) * nq];
-      for (int a = nc; a < nq; ++a) {
-        const std::size_t k = std::size_t(nodes[a] - firstNew);
-        if (cornersOf[k].size() == 2 || blended[k]) continue;
-        blended[k] = 1;
-        const Real weight = cornersOf[k].size() == 4 ? 0.5 : 0.25;
-        for (int e = nc; e < nq; ++e) {
-          const auto& edge = cornersOf[std::size_t(nodes[e] - firstNew)];
-          if (edge.size() != 2 || !std::includes(cornersOf[k].begin(), cornersOf[k].end(), edge.begin(), edge.end()))
-            continue;
-          for (int i = 0; i < dim; ++i)
-            mesh.coords[std::size_t(nodes[a]) * dim + i] +=
-                weight * (mesh.coord(nodes[e], i) - 0.5 * (mesh.coord(edge[0], i) + mesh.coord(edge[1], i)));
-        }
-      }
+  // visit(cell's nodes, corner count, node count, a) for every added node a of every cell
+  const auto forEachAddedNode = [&mesh](auto&& visit) {
+    for (const auto& b : mesh.blocks) {
+      const CellTypeInfo& row = cellTypeInfo(b.type);
+      const int nc = cornerCount(row), nq = row.numNodes;
+      for (LocalIndex c = 0; c < b.numCells(); ++c)
+        for (int a = nc; a < nq; ++a) visit(&b.connectivity[std::size_t(c) * nq], nc, nq, a);
     }
-  }
+  };
+  std::vector<char> blended(cornersOf.size(), 0);
+  forEachAddedNode([&](const LocalIndex* nodes, int nc, int nq, int a) {
+    const std::size_t k = std::size_t(nodes[a] - firstNew);
+    if (cornersOf[k].size() == 2 || blended[k]) return;
+    blended[k] = 1;
+    const Real weight = cornersOf[k].size() == 4 ? 0.5 : 0.25;
+    for (int e = nc; e < nq; ++e) {
+      const auto& edge = cornersOf[std::size_t(nodes[e] - firstNew)];
+      if (edge.size() != 2 || !std::includes(cornersOf[k].begin(), cornersOf[k].end(), edge.begin(), edge.end()))
+        continue;
+      for (int i = 0; i < dim; ++i)
+        mesh.coords[std::size_t(nodes[a]) * dim + i] +=
+            weight * (mesh.coord(nodes[e], i) - 0.5 * (mesh.coord(edge[0], i) + mesh.coord(edge[1], i)));
+    }
+  });
   if (placeFace && dim == 3) {
     std::vector<std::array<Real, 3>> moved(cornersOf.size(), std::array<Real, 3>{});
     for (std::size_t k = 0; k < cornersOf.size(); ++k) {
@@ -295,21 +297,14 @@ void elevate(Mesh& mesh, bool serendipity, const EdgeNodePlacement& place, const
       placeFace(cornersOf[k], x);
       for (int i = 0; i < 3; ++i) moved[k][std::size_t(i)] = x[i] - before[std::size_t(i)];
     }
-    for (const auto& b : mesh.blocks) {
-      const CellTypeInfo& row = cellTypeInfo(b.type);
-      const int nc = cornerCount(row), nq = row.numNodes;
-      for (LocalIndex c = 0; c < b.numCells(); ++c) {
-        const LocalIndex* nodes = &b.connectivity[std::size_t(c) * nq];
-        for (int a = nc; a < nq; ++a) {
-          if (cornersOf[std::size_t(nodes[a] - firstNew)].size() != 8) continue;
-          for (int f = nc; f < nq; ++f) {
-            const auto& move = moved[std::size_t(nodes[f] - firstNew)];
-            if (cornersOf[std::size_t(nodes[f] - firstNew)].size() == 4)
-              for (int i = 0; i < 3; ++i) mesh.coords[std::size_t(nodes[a]) * 3 + i] += 0.5 * move[std::size_t(i)];
-          }
-        }
+    forEachAddedNode([&](const LocalIndex* nodes, int nc, int nq, int a) {
+      if (cornersOf[std::size_t(nodes[a] - firstNew)].size() != 8) return;
+      for (int f = nc; f < nq; ++f) {
+        const auto& move = moved[std::size_t(nodes[f] - firstNew)];
+        if (cornersOf[std::size_t(nodes[f] - firstNew)].size() == 4)
+          for (int i = 0; i < 3; ++i) mesh.coords[std::size_t(nodes[a]) * 3 + i] += 0.5 * move[std::size_t(i)];
       }
-    }
+    });
   }
   for (auto& [name, nodes] : mesh.nodeSets) {
     const std::size_t count = nodes.size();
