@@ -11,9 +11,47 @@ namespace cgcm::app {
 
 using assembly::Vector;
 
+namespace {
+
+// The surface as straight segments (2D) or triangles (3D) through all its facets' nodes, for the
+// closest-point search of the contact radius: a quadratic facet (Exodus order: corners, mid-edge
+// nodes from edge 0-1 on, centre) becomes its pieces between its nodes, the polygon through them
+// (a chord error of the curved facet, small beside the cells' size).
+mesh::Surface straightPieces(const mesh::Surface& s, int dim) {
+  const int npf = s.nodesPerFacet;
+  if (dim == 2 ? npf == 2 : npf == 3 || npf == 4) return mesh::triangulated(s);
+  static const int line3[2][2] = {{0, 2}, {2, 1}};
+  static const int tri6[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+  static const int quad8[6][3] = {{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {6, 3, 7}, {4, 5, 6}, {4, 6, 7}};
+  static const int quad9[8][3] = {{0, 4, 8}, {0, 8, 7}, {4, 1, 5}, {4, 5, 8}, {8, 5, 2}, {8, 2, 6}, {7, 8, 6}, {7, 6, 3}};
+  mesh::Surface out;
+  out.body = s.body;
+  out.nodesPerFacet = dim;
+  auto add = [&](const LocalIndex* n, const auto& pieces, LocalIndex f) {
+    for (const auto& piece : pieces) {
+      for (int k = 0; k < dim; ++k) out.facets.push_back(n[piece[k]]);
+      if (!s.facetCells.empty()) out.facetCells.push_back(s.facetCells[f]);
+    }
+  };
+  for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    const LocalIndex* n = &s.facets[std::size_t(f) * npf];
+    if (dim == 2)
+      add(n, line3, f);
+    else if (npf == 6)
+      add(n, tri6, f);
+    else if (npf == 8)
+      add(n, quad8, f);
+    else
+      add(n, quad9, f);
+  }
+  return out;
+}
+
+}  // namespace
+
 ContactProbe::ContactProbe(const mesh::ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
     : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)),
-      upperNodes_(m.surfaces[c.upperBody].facets), lowerSurface_(mesh::triangulated(m.surfaces[c.lowerBody])) {
+      upperNodes_(m.surfaces[c.upperBody].facets), lowerSurface_(straightPieces(m.surfaces[c.lowerBody], m.dim)) {
   std::sort(upperNodes_.begin(), upperNodes_.end());
   upperNodes_.erase(std::unique(upperNodes_.begin(), upperNodes_.end()), upperNodes_.end());
 }

@@ -19,14 +19,40 @@ SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulatio
   area.assign(std::size_t(nn), 0.0);
   std::vector<Real> normal(d * std::size_t(nn), 0.0);  // sum of the node's facets' area vectors
   const bool axisymmetric = formulation == Formulation::Axisymmetric;
+  // 3D: a facet's area vector (sum of its corner triangles' for a quad), shared equally by its nodes
+  auto addPolygon = [&](const LocalIndex* n, int count) {
+    Real m[3] = {0.0, 0.0, 0.0};
+    for (int a = 1; a + 1 < count; ++a) {
+      const Real* x0 = &x[3 * std::size_t(n[0])];
+      const Real* x1 = &x[3 * std::size_t(n[a])];
+      const Real* x2 = &x[3 * std::size_t(n[a + 1])];
+      const Real e1[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
+      const Real e2[3] = {x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
+      m[0] += 0.5 * (e1[1] * e2[2] - e1[2] * e2[1]);
+      m[1] += 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]);
+      m[2] += 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
+    }
+    const Real A = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (int a = 0; a < count; ++a) {
+      area[n[a]] += A / count;
+      for (int i = 0; i < 3; ++i) normal[3 * std::size_t(n[a]) + i] += m[i];
+    }
+  };
+  // The straight pieces of a quadratic 3D facet through its nodes (Exodus order: corners,
+  // mid-edge nodes from edge 0-1 on, centre): Tri6 four triangles; Quad8 the four corner
+  // triangles and the quadrilateral of the mid-edge nodes; Quad9 four quadrilaterals.
+  const int tri6[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+  const int quad8[4][3] = {{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {6, 3, 7}};
+  const int quad9[4][4] = {{0, 4, 8, 7}, {4, 1, 5, 8}, {8, 5, 2, 6}, {7, 8, 6, 3}};
   for (const mesh::Surface& s : mesh.surfaces) {
     const int npf = s.nodesPerFacet;
-    if (s.numFacets() > 0 && (d == 2 ? npf != 2 : npf != 3 && npf != 4))
+    if (s.numFacets() > 0 && (d == 2 ? npf != 2 && npf != 3 : npf != 3 && npf != 4 && npf != 6 && npf != 8 && npf != 9))
       throw std::logic_error("surfaceTractions: facets of " + std::to_string(npf) + " nodes in " + std::to_string(d) +
-                             "D; the lumped areas are those of straight segments, triangles and quadrilaterals");
+                             "D; the lumped areas are those of segments, triangles and quadrilaterals, linear or "
+                             "quadratic");
     for (LocalIndex f = 0; f < s.numFacets(); ++f) {
       const LocalIndex* n = &s.facets[std::size_t(f) * npf];
-      if (d == 2) {
+      if (d == 2 && npf == 2) {
         const Real tx = x[2 * n[1]] - x[2 * n[0]], ty = x[2 * n[1] + 1] - x[2 * n[0] + 1];
         const Real length = std::hypot(tx, ty);
         // share of each node: integral of N_a (times 2 pi r in axisymmetry)
@@ -36,22 +62,42 @@ SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulatio
         for (int a = 0; a < 2; ++a) normal[2 * n[a]] += ty, normal[2 * n[a] + 1] -= tx;  // outward, length-weighted
         continue;
       }
-      // 3D: the facet's area vector (sum of its corner triangles' for a quad), shared equally by its nodes
-      Real m[3] = {0.0, 0.0, 0.0};
-      for (int a = 1; a + 1 < npf; ++a) {
-        const Real* x0 = &x[3 * std::size_t(n[0])];
-        const Real* x1 = &x[3 * std::size_t(n[a])];
-        const Real* x2 = &x[3 * std::size_t(n[a + 1])];
-        const Real e1[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
-        const Real e2[3] = {x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
-        m[0] += 0.5 * (e1[1] * e2[2] - e1[2] * e2[1]);
-        m[1] += 0.5 * (e1[2] * e2[0] - e1[0] * e2[2]);
-        m[2] += 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
+      if (d == 2) {
+        // a quadratic edge (ends, then mid node): the integral of N_a (times 2 pi r) over the curved
+        // edge, 3-point Gauss (exact on a straight edge in plane strain), so that the consistent node
+        // forces of a uniform traction (1/6, 2/3, 1/6 of it) give that traction at every node
+        const Real g = std::sqrt(0.6), tq[3] = {-g, 0.0, g}, wq[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+        for (int q = 0; q < 3; ++q) {
+          const Real t = tq[q], N[3] = {0.5 * t * (t - 1.0), 0.5 * t * (t + 1.0), 1.0 - t * t},
+                     dN[3] = {t - 0.5, t + 0.5, -2.0 * t};
+          Real xq = 0.0, tx = 0.0, ty = 0.0;
+          for (int a = 0; a < 3; ++a) {
+            xq += N[a] * x[2 * n[a]];
+            tx += dN[a] * x[2 * n[a]];
+            ty += dN[a] * x[2 * n[a] + 1];
+          }
+          const Real w = wq[q] * (axisymmetric ? 2.0 * kPi * xq : 1.0);
+          for (int a = 0; a < 3; ++a) {
+            area[n[a]] += w * N[a] * std::hypot(tx, ty);
+            normal[2 * n[a]] += wq[q] * N[a] * ty, normal[2 * n[a] + 1] -= wq[q] * N[a] * tx;
+          }
+        }
+        continue;
       }
-      const Real A = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-      for (int a = 0; a < npf; ++a) {
-        area[n[a]] += A / npf;
-        for (int i = 0; i < 3; ++i) normal[3 * std::size_t(n[a]) + i] += m[i];
+      auto piece = [&](const int* idx, int count) {
+        LocalIndex sub[4];
+        for (int k = 0; k < count; ++k) sub[k] = n[idx[k]];
+        addPolygon(sub, count);
+      };
+      if (npf == 3 || npf == 4) {
+        addPolygon(n, npf);
+      } else if (npf == 6) {
+        for (const auto& t : tri6) piece(t, 3);
+      } else if (npf == 8) {
+        for (const auto& t : quad8) piece(t, 3);
+        addPolygon(n + 4, 4);
+      } else {
+        for (const auto& t : quad9) piece(t, 4);
       }
     }
   }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "cgcm/core/Error.hpp"
 
@@ -63,8 +64,9 @@ InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const 
   Kokkos::View<LocalIndex[2]> firstMissing("cgcm::volume_first_missing");  // row, column node + 1, 0: none
   const auto rowIds = rowIds_;
   const bool withTangent = J != nullptr;
-  auto scatter = [=](const interaction::VolumeContribution& c, long) {
-    LocalIndex rows[3 * interaction::kMaxVolumeCellNodes], cols[6 * interaction::kMaxVolumeCellNodes];
+  auto scatter = [=](const auto& c, long) {
+    constexpr int maxNodes = std::decay_t<decltype(c)>::maxNodes;  // linear meshes: 8, else 27
+    LocalIndex rows[3 * maxNodes], cols[6 * maxNodes];
     const int nr = dim * c.numRowNodes, nc = dim * c.numColNodes;
     bool finite = true;
     for (int r = 0; r < nr; ++r) finite = finite && std::isfinite(c.f[r]);

@@ -208,18 +208,17 @@ std::vector<ScalarParameter> InteractionSetup::scalarParameters(std::shared_ptr<
 }
 
 void InteractionSetup::checkElementOrder(int order, const std::string& where) const {
-  // Quadratic cells have curved facets: Method 3's surface points and closest points, and the
-  // traction results.e shows (either method), stand on straight facets; Method 1's pair list
-  // bounds a cell by its nodes, which a curved cell may leave.
-  if (order == 1) return;
+  // Method 1 integrates over the (curved) quadratic cells with their own shape functions and
+  // bounds them by boxes that hold them. Method 3's surface points and closest points stand on
+  // straight facets: it takes linear cells only.
+  if (order == 1 || method == Method::VolumePair) return;
   std::string linear;
   for (const CellTypeInfo& row : kCellTypes)
     if (row.order == 1) linear += (linear.empty() ? "" : ", ") + std::string(row.name);
-  throw InputError("Interaction/Method = \"" + std::string(method == Method::VolumePair ? "volume pair" : "half-space point") +
-                   "\" takes linear cells (" + linear + "), but " + where +
+  throw InputError("Interaction/Method = \"half-space point\" takes linear cells (" + linear + "), but " + where +
                    ": the interaction on the curved facets of quadratic cells is not implemented; set "
-                   "Geometry/Element Order = 1 (a body that interacts with nothing, e.g. Geometry/Type = \"block\", "
-                   "takes order 2)");
+                   "Geometry/Element Order = 1 or Interaction/Method = \"volume pair\" (a body that interacts with "
+                   "nothing, e.g. Geometry/Type = \"block\", takes order 2)");
 }
 
 void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation) const {

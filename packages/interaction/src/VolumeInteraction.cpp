@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/Quadrature.hpp"
@@ -18,12 +19,42 @@ namespace {
 std::string where() { return "volume pair interaction: "; }
 
 // The cells whose points the quadrature places: those with shape functions, tensor-product cells
-// in 2D and 3D, simplices in 3D (split into four hexahedra; see tetSubHexPoint); linear ones only
-// (the pair list's bounding boxes are those of the nodes, which a curved cell may leave).
+// in 2D and 3D, simplices in 3D (split into four hexahedra; see tetSubHexPoint), linear and
+// quadratic (their boxes: cellBound).
 bool volumeQuadratureTakes(CellType type, int dim) {
   const CellTypeInfo& row = cellTypeInfo(type);
-  return row.dim == dim && (!row.simplex || dim == 3) && row.order == 1 && row.numNodes <= kMaxVolumeCellNodes &&
+  return row.dim == dim && (!row.simplex || dim == 3) && row.numNodes <= kMaxVolumeCellNodes &&
          fem::withElement(type, [](auto) {});
+}
+
+// Where a (curved) quadratic cell can be, from its nodes. Its map reproduces the (multi)linear
+// interpolation x_lin of its corners exactly, so x(xi) = x_lin(xi) + sum over the non-corner
+// nodes a of N_a(xi) d_a, d_a = x_a - x_lin(xi_a) the node's deviation from the position the
+// corners give it. x_lin lies in the box of the corners (a convex combination), so per
+// coordinate the cell lies in that box grown by grow max_a |d_a,i|, grow = max over the cell of
+// sum_a |N_a| over the non-corner nodes:
+//   - serendipity (Quad8, Hex20): the mid-edge N_a >= 0 sum to sum_k (1 - xi_k^2) <= dim;
+//   - Lagrange (Quad9, Hex27): at most the sum of every |N_a|, (5/4)^dim (the 1D Lebesgue
+//     constant of the nodes -1, 0, 1 is max |xi| + 1 - xi^2 = 5/4; the non-corner part alone
+//     is 1.38 and 1.85 on a grid);
+//   - Tet10: the mid-edge 4 l_a l_b sum to 2 (1 - sum l_a^2) <= 3/2.
+// (One edge alone: x_lin + 4 t (1 - t) d, within d of its chord, grow 1.) motion: max sum_a |N_a|,
+// the most a point of the cell moves per largest node motion (the pair list's Verlet test):
+// 1 on linear cells, 3 (Quad8) and 5 (Hex20) at the centre, (5/4)^dim (Lagrange), 2 (Tet10, at
+// the centroid: the corners' l (2 l - 1) = -1/8, the mid-edge nodes 1/4); checked by sampling in
+// test_volume_interaction.cpp.
+struct CellBound {
+  Real grow, motion;
+};
+CellBound cellBound(CellType type) {
+  switch (type) {
+    case CellType::Quad8: return {2.0, 3.0};
+    case CellType::Quad9: return {25.0 / 16.0, 25.0 / 16.0};
+    case CellType::Hex20: return {3.0, 5.0};
+    case CellType::Hex27: return {125.0 / 64.0, 125.0 / 64.0};
+    case CellType::Tet10: return {1.5, 2.0};
+    default: return {0.0, 1.0};  // linear: the box of the corners
+  }
 }
 
 std::string cellTypesTaken(int dim) {
@@ -62,6 +93,10 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
 
   // cells as plain arrays for the kernel
   const LocalIndex numCells = mesh.numCells();
+  for (const auto& block : mesh.blocks) {
+    maxCellNodes_ = std::max(maxCellNodes_, mesh::nodesPerCell(block.type));
+    maxPointMotion_ = std::max(maxPointMotion_, cellBound(block.type).motion);
+  }
   Kokkos::View<LocalIndex* [kMaxVolumeCellNodes]> cellNodes("cgcm::volume_cell_nodes", numCells);
   Kokkos::View<int*> cellType("cgcm::volume_cell_type", numCells), cellBody("cgcm::volume_cell_body", numCells);
   cellsOfBody_.assign(numBodies_, {});
@@ -115,23 +150,27 @@ void VolumeInteraction::setLengthScale(Real b) {
 
 std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Real* coords, Real radius) const {
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, LocalIndex>;
-  // per body: each cell's current bounding box, grown by radius / 2 on every side
+  // per body: each cell's current bounding box (holding the curved cell), grown by radius / 2 on
+  // every side; its size: the diagonal of its nodes' box (the cell's diameter)
   std::vector<std::vector<Box>> boxes(numBodies_);
   std::vector<std::array<Real, 6>> bounds(view_.cellBody.extent(0));
+  std::vector<Real> sizes(view_.cellBody.extent(0));
   for (int b = 0; b < numBodies_; ++b)
     for (LocalIndex c : cellsOfBody_[b]) {
       std::array<Real, 6>& bb = bounds[c];
-      for (int i = 0; i < 3; ++i) {
-        bb[i] = std::numeric_limits<Real>::max();
-        bb[3 + i] = -std::numeric_limits<Real>::max();
-      }
+      Real lo0[3], hi0[3];
+      cellBox(c, coords, lo0, hi0);
+      for (int i = 0; i < 3; ++i) bb[i] = lo0[i], bb[3 + i] = hi0[i];
+      Real nlo[3] = {0.0, 0.0, 0.0}, nhi[3] = {0.0, 0.0, 0.0};
+      for (int i = 0; i < dim_; ++i) nlo[i] = std::numeric_limits<Real>::max(), nhi[i] = -nlo[i];
       for (int a = 0; a < kMaxVolumeCellNodes && view_.cellNodes(c, a) >= 0; ++a)
         for (int i = 0; i < dim_; ++i) {
           const Real v = coords[std::size_t(dim_) * view_.cellNodes(c, a) + i];
-          bb[i] = std::min(bb[i], v);
-          bb[3 + i] = std::max(bb[3 + i], v);
+          nlo[i] = std::min(nlo[i], v);
+          nhi[i] = std::max(nhi[i], v);
         }
-      if (dim_ == 2) bb[2] = bb[5] = 0.0;
+      sizes[c] = std::sqrt((nhi[0] - nlo[0]) * (nhi[0] - nlo[0]) + (nhi[1] - nlo[1]) * (nhi[1] - nlo[1]) +
+                           (nhi[2] - nlo[2]) * (nhi[2] - nlo[2]));
       double lo[3], hi[3];
       for (int i = 0; i < 3; ++i) {
         lo[i] = bb[i] - 0.5 * radius;
@@ -145,15 +184,13 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
       if (boxes[k].empty() || boxes[l].empty()) continue;
       auto report = [&](const Box& p, const Box& q) {
         const std::array<Real, 6>&bp = bounds[p.info()], &bq = bounds[q.info()];
-        Real gap2 = 0.0, size2p = 0.0, size2q = 0.0;
+        Real gap2 = 0.0;
         for (int i = 0; i < 3; ++i) {
           const Real g = std::max({0.0, bp[i] - bq[3 + i], bq[i] - bp[3 + i]});
           gap2 += g * g;
-          size2p += (bp[3 + i] - bp[i]) * (bp[3 + i] - bp[i]);
-          size2q += (bq[3 + i] - bq[i]) * (bq[3 + i] - bq[i]);
         }
         if (gap2 > radius * radius) return;  // the boxes' corners are farther apart
-        const Real gap = std::sqrt(gap2), size = std::sqrt(std::max(size2p, size2q));
+        const Real gap = std::sqrt(gap2), size = std::max(sizes[p.info()], sizes[q.info()]);
         out.push_back({p.info(), q.info(), gap, size});
         out.push_back({q.info(), p.info(), gap, size});
       };
@@ -165,6 +202,48 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
     return a.rowCell != b.rowCell ? a.rowCell < b.rowCell : a.colCell < b.colCell;
   });
   return out;
+}
+
+void VolumeInteraction::cellBox(LocalIndex cell, const Real* coords, Real (&lo)[3], Real (&hi)[3]) const {
+  const CellType type = CellType(view_.cellType(cell));
+  const CellTypeInfo& row = cellTypeInfo(type);
+  const int corners = cornerCount(row);
+  auto X = [&](int a, int i) { return coords[std::size_t(dim_) * view_.cellNodes(cell, a) + i]; };
+  for (int i = 0; i < 3; ++i) lo[i] = hi[i] = 0.0;
+  for (int i = 0; i < dim_; ++i) {
+    lo[i] = std::numeric_limits<Real>::max();
+    hi[i] = -std::numeric_limits<Real>::max();
+    for (int a = 0; a < corners; ++a) {
+      lo[i] = std::min(lo[i], X(a, i));
+      hi[i] = std::max(hi[i], X(a, i));
+    }
+  }
+  if (row.order == 1) return;
+  Real dev[3] = {0.0, 0.0, 0.0};  // max |d_a,i| over the non-corner nodes
+  fem::withElement(type, [&](auto element) {
+    using E = decltype(element);
+    constexpr bool quadratic = cellTypeInfo(E::cellType).order == 2, simplex = cellTypeInfo(E::cellType).simplex;
+    if constexpr (quadratic) {
+      // the linear cell of the corners: its shape functions at the node give x_lin(xi_a)
+      using Linear =
+          std::conditional_t<simplex, fem::Tet4, std::conditional_t<E::dim == 2, fem::Quad4, fem::Hex8>>;
+      for (int a = Linear::numNodes; a < E::numNodes; ++a) {
+        Real xi[E::dim], N[Linear::numNodes], dN[Linear::numNodes][E::dim];
+        E::parentCoordinates(a, xi);
+        Linear::shape(xi, N, dN);
+        for (int i = 0; i < dim_; ++i) {
+          Real lin = 0.0;
+          for (int c = 0; c < Linear::numNodes; ++c) lin += N[c] * X(c, i);
+          dev[i] = std::max(dev[i], std::abs(X(a, i) - lin));
+        }
+      }
+    }
+  });
+  const Real grow = cellBound(type).grow;
+  for (int i = 0; i < dim_; ++i) {
+    lo[i] -= grow * dev[i];
+    hi[i] += grow * dev[i];
+  }
 }
 
 void VolumeInteraction::setRowCells(std::vector<char> rowCells) {
@@ -186,7 +265,8 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
       }
       moved2 = std::max(moved2, d2);
     }
-    if (std::sqrt(moved2) <= 0.5 * skin) return false;
+    // a point of a quadratic cell moves by up to maxPointMotion_ times its nodes' largest motion
+    if (std::sqrt(moved2) * maxPointMotion_ <= 0.5 * skin) return false;
   }
   const Real r0 = potential_->r0() * lengthScale_;
   pairs_.clear();
@@ -222,7 +302,7 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
 }
 
 Real VolumeInteraction::energy(const Real* coords) {
-  evaluate(coords, [](const VolumeContribution&, long) {}, false);  // the listed pairs: all without row cells set
+  evaluate(coords, [](const auto&, long) {}, false);  // the listed pairs: all without row cells set
   return summary_.energy;
 }
 

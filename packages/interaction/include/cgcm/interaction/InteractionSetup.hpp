@@ -54,11 +54,11 @@ struct InteractionSetup {
   /// epsilon (the strength) by gammaW0 / gammaW; gammaL = R0 / r0 at fixed
   /// gammaW scales r0 (the length) by gammaL0 / gammaL with epsilon r0^3 fixed.
   std::vector<ScalarParameter> scalarParameters(std::shared_ptr<Interaction> interaction) const;
-  /// Throws InputError unless `order` is 1: both methods take linear cells only (quadratic cells
-  /// have curved facets). `where` says where the order comes from, for the message: "body
+  /// Throws InputError for `order` 2 with Method 3, which takes linear cells only (quadratic cells
+  /// have curved facets); Method 1 takes both orders. `where` says where the order comes from, for the message: "body
   /// \"sphere\" has QUAD9 cells". Called before a mesh is built (Geometry/Element Order) and by checkMesh.
   void checkElementOrder(int order, const std::string& where) const;
-  /// Throws InputError if the method cannot integrate over `mesh`: both take
+  /// Throws InputError if the method cannot integrate over `mesh`: Method 3 takes
   /// linear cells only (quadratic cells have curved facets); Method 1 needs the
   /// whole bodies, not a symmetric part of them.
   void checkMesh(const mesh::Mesh& mesh, Formulation formulation) const;

@@ -9,7 +9,8 @@
 // Pair list: every (cell of body k, cell of body l) pair whose current
 // bounding boxes come within cutoff + skin, found with CGAL's box
 // intersection; kept until a node has moved by more than skin / 2 since the
-// list was built (then no pair within the cutoff can be missing), so the
+// list was built (quadratic cells: skin / (2 Lambda), see maxPointMotion;
+// then no pair within the cutoff can be missing), so the
 // energy is one smooth function between rebuilds. Each unordered pair is
 // listed twice, once per direction: the directed pair (row cell, column
 // cell) gives the forces on the row cell's nodes only, so a rank evaluates
@@ -17,8 +18,8 @@
 // directions use the same quadrature: the forces on the two bodies are
 // equal and opposite to round-off.
 //
-// Quadrature: tensor Gauss-Legendre of order n per direction (Quad4, Hex8;
-// Tet4: the same on each of the four hexahedra that split it, one per
+// Quadrature: tensor Gauss-Legendre of order n per direction (Quad4, Quad8,
+// Quad9, Hex8, Hex20, Hex27; Tet4, Tet10: the same on each of the four hexahedra that split it, one per
 // vertex, through the edge midpoints, face centroids and the centroid: a
 // rule invariant under every permutation of the vertices, so that mirror
 // images of a mesh get mirror images of its points, with positive weights;
@@ -26,7 +27,10 @@
 // n = base order + ceil(kCloseOrderFactor size / max(distance, r0 / 2)), at
 // most the maximum order, with size the larger cell diameter and distance the
 // gap between the cells' bounding boxes, so that close pairs, where the
-// integrand varies on the scale of the gap, get more points.
+// integrand varies on the scale of the gap, get more points. Quadratic cells
+// map the same points with their own shape functions (curved cells: det J0
+// and the axisymmetric 2 pi R of the quadratic map); their bounding boxes
+// are grown to hold the curved cell (VolumeInteraction.cpp, cellBound).
 //
 // The kernel is a Kokkos functor over the directed pairs (no virtual calls,
 // no allocation); it hands each pair's element vector and matrix to a
@@ -65,9 +69,12 @@ constexpr int kMaxVolumeOrder2D = 12;
 constexpr int kMaxVolumeOrder3D = 6;
 constexpr int kMaxTetOrder = 4;
 constexpr int kMaxCellPoints = 256;  ///< 6^3 (Hex8), 4 x 4^3 (Tet4)
-/// The most nodes of a cell the method takes: the pair buffers below are sized by it (a larger
-/// cell type is refused until they are made for it).
-constexpr int kMaxVolumeCellNodes = 8;
+/// The most nodes of a cell the method takes (Hex27), and of a linear cell (Hex8). The kernel's
+/// per-pair buffers are sized by the most nodes of the mesh's cells, one of the two: sized for 27
+/// on linear cells they made the plane-strain kernel without tangent 10-15 % slower (zeroing and
+/// striding buffers three times as large), so linear meshes keep buffers of 8.
+constexpr int kMaxVolumeCellNodes = 27;
+constexpr int kMaxLinearCellNodes = 8;
 
 struct VolumeInteractionOptions {
   Formulation formulation = Formulation::PlaneStrain;
@@ -95,17 +102,20 @@ struct VolumePair {
 
 /// The contribution of a directed pair, ready to scatter: node-major dofs,
 /// f[dim a + i] for rowNodes[a]; K[dim a + i][dim b + j] = d f / d x_j(colNodes[b]),
-/// colNodes = the row cell's nodes, then the column cell's.
-struct VolumeContribution {
+/// colNodes = the row cell's nodes, then the column cell's. MaxNodes: the buffers' size
+/// (kMaxLinearCellNodes or kMaxVolumeCellNodes); a scatter takes either (a generic callable).
+template <int MaxNodes>
+struct VolumeContributionOf {
+  static constexpr int maxNodes = MaxNodes;
   int dim = 2;
   int rowBody = 0;
   int numRowNodes = 0;
   int numColNodes = 0;
-  LocalIndex rowNodes[kMaxVolumeCellNodes];
-  LocalIndex colNodes[2 * kMaxVolumeCellNodes];
+  LocalIndex rowNodes[MaxNodes];
+  LocalIndex colNodes[2 * MaxNodes];
   Real energy = 0.0;  ///< half the pair's energy (the reverse direction adds the other half)
-  Real f[3 * kMaxVolumeCellNodes];
-  Real K[3 * kMaxVolumeCellNodes][6 * kMaxVolumeCellNodes];
+  Real f[3 * MaxNodes];
+  Real K[3 * MaxNodes][6 * MaxNodes];
 };
 
 /// Counts of the last updatePairs / evaluate.
@@ -128,10 +138,11 @@ struct VolumeInteractionSummary {
 namespace detail {
 
 /// Quadrature points of one cell at the current coordinates.
+template <int MaxNodes>
 struct CellPoints {
   int count = 0;
   int numNodes = 0;
-  Real N[kMaxCellPoints][kMaxVolumeCellNodes];
+  Real N[kMaxCellPoints][MaxNodes];
   Real x[kMaxCellPoints][3];
   Real W[kMaxCellPoints];  ///< beta0 w det J0 (x 2 pi R axisymmetric)
 };
@@ -188,9 +199,9 @@ KOKKOS_INLINE_FUNCTION void tetSubHexPoint(int v, Real s, Real t, Real u, Real (
                  J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]));
 }
 
-template <int Dim, class Element>
+template <int Dim, class Element, int MaxNodes>
 KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
-                                         bool axisymmetric, CellPoints& out) {
+                                         bool axisymmetric, CellPoints<MaxNodes>& out) {
   constexpr int nn = Element::numNodes;
   constexpr bool tet = cellTypeInfo(Element::cellType).simplex;  // pairs with a tetrahedron have order <= kMaxTetOrder
   out.numNodes = nn;
@@ -243,13 +254,13 @@ KOKKOS_INLINE_FUNCTION void tensorPoints(const VolumeMeshView& m, LocalIndex cel
   }
 }
 
-template <int Dim>
+template <int Dim, int MaxNodes>
 KOKKOS_INLINE_FUNCTION void cellPoints(const VolumeMeshView& m, LocalIndex cell, int order, const Real* x,
-                                       bool axisymmetric, CellPoints& out) {
+                                       bool axisymmetric, CellPoints<MaxNodes>& out) {
   out.count = 0;  // a cell type without points (refused by the constructor) contributes nothing
   fem::withElement(CellType(m.cellType(cell)), [&](auto element) {
     using E = decltype(element);
-    if constexpr (E::dim == Dim && E::numNodes <= kMaxVolumeCellNodes)
+    if constexpr (E::dim == Dim && E::numNodes <= MaxNodes)
       tensorPoints<Dim, E>(m, cell, order, x, Dim == 2 && axisymmetric, out);
   });
 }
@@ -265,8 +276,8 @@ KOKKOS_INLINE_FUNCTION void pointPairLaw(const P& c, const Real* x1, const Real*
     pairLawAxisymmetric(c, x1, x2, psi, g, H11, H12);
 }
 
-/// The kernel: one directed pair per index.
-template <Formulation F, class P, class Scatter>
+/// The kernel: one directed pair per index, every cell of at most MaxNodes nodes.
+template <Formulation F, class P, class Scatter, int MaxNodes>
 struct VolumePairFunctor {
   static constexpr int Dim = F == Formulation::ThreeD ? 3 : 2;
   VolumeMeshView mesh;
@@ -278,10 +289,10 @@ struct VolumePairFunctor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int k) const {
     const VolumePair p = pairs(k);
-    CellPoints a, b;
+    CellPoints<MaxNodes> a, b;
     cellPoints<Dim>(mesh, p.rowCell, p.order, x.data(), F == Formulation::Axisymmetric, a);
     cellPoints<Dim>(mesh, p.colCell, p.order, x.data(), F == Formulation::Axisymmetric, b);
-    VolumeContribution c;
+    VolumeContributionOf<MaxNodes> c;
     c.dim = Dim;
     c.rowBody = mesh.cellBody(p.rowCell);
     c.numRowNodes = a.numNodes;
@@ -298,7 +309,7 @@ struct VolumePairFunctor {
     for (int i = 0; i < a.count; ++i) {
       // sums over the column cell's points, weighted by W2: psi, d psi/dx1,
       // d2 psi/dx1 dx1 and, per column node, N2 d2 psi/dx1 dx2
-      Real e = 0.0, g[3] = {}, H[3][3] = {}, C[kMaxVolumeCellNodes][3][3] = {};
+      Real e = 0.0, g[3] = {}, H[3][3] = {}, C[MaxNodes][3][3] = {};
       for (int j = 0; j < b.count; ++j) {
         Real psi, gj[3], H11[3][3] = {}, H12[3][3] = {};
         pointPairLaw<F>(law, a.x[i], b.x[j], psi, gj, withTangent ? H11 : nullptr, H12);
@@ -331,7 +342,7 @@ struct VolumePairFunctor {
       }
     }
     c.energy = 0.5 * energy;
-    scatter(static_cast<const VolumeContribution&>(c), a.count * b.count);
+    scatter(static_cast<const VolumeContributionOf<MaxNodes>&>(c), a.count * b.count);
   }
 };
 
@@ -339,7 +350,8 @@ struct VolumePairFunctor {
 
 class VolumeInteraction final : public Interaction {
  public:
-  /// mesh: every body's cells (Quad4 in 2D; Hex8, Tet4 in 3D); densities:
+  /// mesh: every body's cells (Quad4, Quad8, Quad9 in 2D; Hex8, Tet4, Hex20, Hex27, Tet10 in
+  /// 3D); densities:
   /// beta0 per body. Throws InputError for inconsistent arguments or cell
   /// types the method does not handle.
   VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> densities,
@@ -354,12 +366,17 @@ class VolumeInteraction final : public Interaction {
   Real cutoff() const override { return cutoff1_ * lengthScale_; }
   Real skin() const { return skin1_ * lengthScale_; }
   int maxQuadratureOrder() const { return maxOrder_; }
+  /// Lambda of updatePairs: the largest sum of |N_a| over a cell of the mesh.
+  Real maxPointMotion() const { return maxPointMotion_; }
+  /// The box of `cell` at `coords` that holds the whole (curved) cell: lo[0..2], hi[0..2] (2D: z = 0).
+  void cellBox(LocalIndex cell, const Real* coords, Real (&lo)[3], Real (&hi)[3]) const;
   /// The point-pair coefficients in use (strength and length scale applied).
   KernelPotential law() const;
 
   /// Builds the pair list at `coords` (dim entries per node, mesh-wide) if
-  /// none exists, a node moved by more than skin / 2 since it was built, or
-  /// the cutoff changed; returns whether it did.
+  /// none exists, a node moved by more than skin / (2 Lambda) since it was
+  /// built (Lambda: the most a point of a cell moves per node motion, 1 on
+  /// linear cells, see maxPointMotion), or the cutoff changed; returns whether it did.
   bool updatePairs(const Real* coords);
   /// Forgets the pair list (the next updatePairs builds one).
   void invalidatePairs() { built_ = false; }
@@ -371,7 +388,8 @@ class VolumeInteraction final : public Interaction {
   void setRowCells(std::vector<char> rowCells);
 
   /// Evaluates every directed pair of the list at `coords` and calls
-  /// scatter(const VolumeContribution&, long pointPairs) for each, inside a
+  /// scatter(const VolumeContributionOf<n>&, long pointPairs) for each (n =
+  /// kMaxLinearCellNodes on linear meshes, else kMaxVolumeCellNodes), inside a
   /// Kokkos::parallel_for. Fills summary().energy and the resultants.
   template <class Scatter>
   void evaluate(const Real* coords, Scatter scatter, bool withTangent);
@@ -399,8 +417,15 @@ class VolumeInteraction final : public Interaction {
     Real gap, size;
   };
   std::vector<Candidate> candidates(const Real* coords, Real radius) const;
-  template <Formulation F, class Scatter>
+  template <Formulation F, int MaxNodes, class Scatter>
   void run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter, bool withTangent);
+  template <Formulation F, class Scatter>
+  void run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter, bool withTangent) {
+    if (maxCellNodes_ <= kMaxLinearCellNodes)
+      run<F, kMaxLinearCellNodes>(pairs, coords, scatter, withTangent);
+    else
+      run<F, kMaxVolumeCellNodes>(pairs, coords, scatter, withTangent);
+  }
 
   int dim_ = 2;
   int numBodies_ = 0;
@@ -410,6 +435,8 @@ class VolumeInteraction final : public Interaction {
   KernelPotential law1_;  ///< at strength 1, length scale 1
   VolumeInteractionOptions options_;
   int maxOrder_ = 0;
+  int maxCellNodes_ = 0;        ///< the most nodes of a cell of the mesh
+  Real maxPointMotion_ = 1.0;  ///< see maxPointMotion()
   Real cutoff1_ = 0.0, skin1_ = 0.0;
   Real strength_ = 1.0, lengthScale_ = 1.0;
   std::vector<std::vector<LocalIndex>> cellsOfBody_;
@@ -424,13 +451,13 @@ class VolumeInteraction final : public Interaction {
   VolumeInteractionSummary summary_;
 };
 
-template <Formulation F, class Scatter>
+template <Formulation F, int MaxNodes, class Scatter>
 void VolumeInteraction::run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter,
                             bool withTangent) {
   // one kernel per potential type, chosen once per evaluation
   std::visit(
       [&](const auto& law) {
-        detail::VolumePairFunctor<F, std::decay_t<decltype(law)>, Scatter> functor{
+        detail::VolumePairFunctor<F, std::decay_t<decltype(law)>, Scatter, MaxNodes> functor{
             view_,
             pairs,
             Kokkos::View<const Real*, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(coords, std::size_t(dim_) * numNodes_),
@@ -451,7 +478,7 @@ void VolumeInteraction::evaluate(const Real* coords, Scatter scatter, bool withT
   Kokkos::View<Real[1]> energy("cgcm::volume_energy");
   Kokkos::View<long[1]> pointPairs("cgcm::volume_point_pairs");
   const int dim = dim_;
-  auto wrapped = [=](const VolumeContribution& c, long np) {
+  auto wrapped = [=](const auto& c, long np) {
     Kokkos::atomic_add(&energy(0), c.energy);
     Kokkos::atomic_add(&pointPairs(0), np);
     for (int a = 0; a < c.numRowNodes; ++a)
