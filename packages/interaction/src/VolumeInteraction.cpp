@@ -317,4 +317,20 @@ std::vector<std::pair<LocalIndex, LocalIndex>> VolumeInteraction::couplings(cons
   return out;
 }
 
+Real pairCutoffWorkFraction(const PairPotential& potential, Real cutoff) {
+  const Real w = potential.adhesionWorkCoefficient();
+  const auto gap = potential.surfaceEquilibriumDistance();
+  if (!(w > 0.0) || !gap || !std::isfinite(cutoff)) return 0.0;
+  // The pairs at distance r >= r_c between the half-spaces at gap g: 2 pi r dr per point of one
+  // body at height h above the other's surface, and (r - g)^2 / 2 of such point pairs per unit area
+  // summed over h in [g, r]. Simpson after r = r_c / t (the integrand vanishes at t = 0).
+  const int n = 400;
+  Real sum = 0.0;
+  for (int i = 1; i <= n; ++i) {
+    const Real t = Real(i) / n, r = cutoff / t, c = i == n ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    sum += c * r * (r - *gap) * (r - *gap) * potential.phi(r) * cutoff / (t * t);
+  }
+  return -kPi * sum / (3.0 * n) / w;
+}
+
 }  // namespace cgcm::interaction
