@@ -63,7 +63,7 @@ Variant evaluate(const std::string& name, const ia::InteractionSetup& setup, con
     volume->updatePairs(coords.data());
     volume->evaluate(
         coords.data(),
-        [&](const ia::VolumeContribution& c, long) {
+        [&](const auto& c, long) {
           for (int a = 0; a < c.numRowNodes; ++a)
             for (int i = 0; i < dim; ++i) v.force[std::size_t(c.rowNodes[a]) * dim + i] -= c.f[dim * a + i];
         },
