@@ -68,8 +68,9 @@ Teuchos::RCP<const ParameterList> validParameters() {
                "half-space point: how a body's surface layer is counted. \"current area\" (the default): the "
                "reference density beta0 over the current area da, the paper's eq. (21); \"reference area\": beta0 "
                "over the undeformed area dA, the layer's particles conserved as the surface stretches. Against "
-               "Method 1, reference area is closer where the surface stretches little (sigma_max/E* below about "
-               "0.3) and far too weak where it stretches much (doc/theory.md#surface-density)",
+               "Method 1, current area is within 1.2 % at the JKR end where the surface stretches little "
+               "(sigma_max/E* up to 0.3), reference area as close only up to Tabor mu = 3; where it stretches "
+               "much both are too weak, reference area far more (doc/theory.md#surface-density)",
                choices({"current area", "reference area"}));
     inter->set("Cutoff", 10.0,
                "interaction cutoff in units of r0: farther points are skipped. It removes part of the work of "
