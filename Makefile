@@ -80,9 +80,11 @@ jkr-study: build
 	@bash tools/run_jkr_study.sh $(BUILD_DIR)
 
 # The JKR end at small contacts: gammaL = 2000, Tabor mu = 2, 3, 5; Method 3
-# with both surface densities at finite and small strain, Method 1 restarted
-# near the minimum, against the Lennard-Jones sphere (tools/jkr_end_study.py):
-# output/validation/jkr-end, and the plot into doc/figures (about 40 minutes).
+# with both surface densities at finite and small strain, Method 1 (cutoff
+# 20 r0) restarted near the minimum, against the Lennard-Jones sphere
+# (tools/jkr_end_study.py): output/validation/jkr-end, and the plot into
+# doc/figures (Method 1 at 20 r0 takes about 4 times its 10 r0 time: a few
+# hours on 2 cores).
 jkr-end: build
 	/usr/bin/python3 tools/jkr_end_study.py --build $(BUILD_DIR) --output output/validation/jkr-end --jobs $(JOBS)
 	cp output/validation/jkr-end/jkr_end.png doc/figures/jkr-end.png
