@@ -147,7 +147,7 @@ solver::ProblemSetup buildProblem(const ParameterList& deck) {
   const auto contactDistance = [&] {
     const auto& interaction = readInteraction(deck, s);
     const int order = mesh::elementOrder(geometry).order;
-    interaction.checkElementOrder(order, "Geometry/Element Order = " + std::to_string(order) + " makes quadratic cells");
+    interaction.checkElementOrder(order, s.formulation, "Geometry/Element Order = " + std::to_string(order) + " makes quadratic cells");
     return interaction.contactDistance();
   };
   attachModel(s, mesh::buildModel(geometry, s.formulation, contactDistance), deck);

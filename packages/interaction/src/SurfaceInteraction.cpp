@@ -9,9 +9,25 @@
 #include <variant>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/Method3CurvedKernel.hpp"
 #include "cgcm/interaction/Method3Kernel3D.hpp"
 
 namespace cgcm::interaction {
+
+namespace {
+
+/// The chords a-mid, mid-b of every Line3 segment (s -> 2s, 2s + 1): what the 2D search runs over.
+mesh::Surface chords(const mesh::Surface& s) {
+  mesh::Surface c{s.body, 2, {}, {}};
+  for (LocalIndex e = 0; e < s.numFacets(); ++e) {
+    const LocalIndex* n = &s.facets[3 * std::size_t(e)];
+    c.facets.insert(c.facets.end(), {n[0], n[2], n[2], n[1]});
+    if (!s.facetCells.empty()) c.facetCells.insert(c.facetCells.end(), 2, s.facetCells[e]);
+  }
+  return c;
+}
+
+}  // namespace
 
 SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std::vector<Real> densities,
                                        std::shared_ptr<const PairPotential> potential,
@@ -31,8 +47,8 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   dim_ = options_.formulation == Formulation::ThreeD ? 3 : 2;
   for (std::size_t k = 0; k < surfaces_.size(); ++k) {
     const int npf = surfaces_[k].nodesPerFacet;
-    if (surfaces_[k].numFacets() > 0 && (dim_ == 2 ? npf != 2 : npf != 3 && npf != 4))
-      throw InputError("surface interaction: " + std::string(dim_ == 2 ? "2D surfaces need 2 nodes per facet"
+    if (surfaces_[k].numFacets() > 0 && (dim_ == 2 ? npf != 2 && npf != 3 : npf != 3 && npf != 4))
+      throw InputError("surface interaction: " + std::string(dim_ == 2 ? "2D surfaces need 2 or 3 nodes per facet"
                                                                        : "3D surfaces need 3 or 4 nodes per facet") +
                        " (body " + std::to_string(k) + " has " + std::to_string(npf) + ")");
     if (!(densities_[k] > 0.0) || !std::isfinite(densities_[k]))
@@ -77,8 +93,9 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
       facetRules_.push_back(facetQuadrature(sk.nodesPerFacet == 4 ? 4 : 3, options_.quadraturePoints));
     }
   } else {
-    targets_ = surfaces_;
+    for (const mesh::Surface& sk : surfaces_) targets_.push_back(sk.nodesPerFacet == 3 ? chords(sk) : sk);
   }
+  chordDeviation_.assign(surfaces_.size(), 0.0);
   std::size_t points = 0;
   for (std::size_t k = 0; k < surfaces_.size(); ++k) {
     firstPoint_.push_back(points);
@@ -91,8 +108,9 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   neighbours_.resize(surfaces_.size());
   for (std::size_t l = 0; l < surfaces_.size(); ++l) {
     const mesh::Surface& sl = surfaces_[l];
-    std::vector<std::pair<LocalIndex, LocalIndex>> byNode;  // (node, 2 s + end)
-    for (LocalIndex i = 0; i < 2 * sl.numFacets(); ++i) byNode.emplace_back(sl.facets[i], i);
+    std::vector<std::pair<LocalIndex, LocalIndex>> byNode;  // (node, 2 s + end): the ends, not a Line3's mid node
+    for (LocalIndex i = 0; i < 2 * sl.numFacets(); ++i)
+      byNode.emplace_back(sl.facets[std::size_t(i / 2) * sl.nodesPerFacet + i % 2], i);
     std::sort(byNode.begin(), byNode.end());
     neighbours_[l].assign(byNode.size(), -1);
     for (std::size_t i = 0; i < byNode.size();) {
@@ -219,6 +237,65 @@ void SurfaceInteraction::findTargets(const Real* coords, const Real x[2], int l,
   keepBlendTargets(rhoMin + range, kMaxBlendTargets, p);
 }
 
+void SurfaceInteraction::curvedSegmentsNear(const Real x[2], int l, Real radius, std::vector<LocalIndex>& out) {
+  near_.clear();
+  search_[l]->facetsNearPoint(x, radius + chordDeviation_[l], near_);
+  out.clear();
+  for (LocalIndex c : near_) out.push_back(c / 2);
+  out.erase(std::unique(out.begin(), out.end()), out.end());  // the chords of a segment are adjacent
+}
+
+Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r) const {
+  const mesh::Surface& sl = surfaces_[l];
+  Real y[6], v[6], eta, p[2];
+  int region;
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < 2; ++i) y[2 * a + i] = coords[2 * std::size_t(sl.facets[3 * std::size_t(s) + a]) + i];
+  const Real d = std::sqrt(projectOntoCurve<3>(x, y, eta, p, region));
+  if (r != nullptr) *r = d;
+  const LocalIndex n = region == 0 ? -1 : neighbours_[l][2 * std::size_t(s) + region - 1];
+  if (smoothing_ <= 0.0 || n < 0) return d;
+  const LocalIndex vertex = sl.facets[3 * std::size_t(s) + region - 1];
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < 2; ++i) v[2 * a + i] = coords[2 * std::size_t(sl.facets[3 * std::size_t(n) + a]) + i];
+  const Real os = detail::overshootAlongEnd<3>(x, y, region - 1) / smoothing_;
+  const Real on = detail::overshootAlongEnd<3>(x, v, sl.facets[3 * std::size_t(n)] == vertex ? 0 : 1) / smoothing_;
+  return d + smoothing_ * os * os * std::exp(-on * on);
+}
+
+// The closest curved segment: the chords' nearest lies within the chord
+// deviation of the curves, so every segment whose chords come within twice
+// that of x is a candidate.
+std::pair<Real, LocalIndex> SurfaceInteraction::closestCurvedSegment(const Real* coords, const Real x[2], int l,
+                                                                     const Projection& chord) {
+  curvedSegmentsNear(x, l, chord.distance + chordDeviation_[l], segments_);
+  std::pair<Real, LocalIndex> best{std::numeric_limits<Real>::infinity(), -1};
+  for (LocalIndex s : segments_) {
+    Real r;
+    curvedBlendDistance(coords, x, l, s, &r);
+    if (r < best.first) best = {r, s};
+  }
+  if (!(best.first <= cutoff_)) best.second = -1;
+  return best;
+}
+
+// As findTargets on the curved segments of body l.
+void SurfaceInteraction::findCurvedTargets(const Real* coords, const Real x[2], int l, InteractionPair& p) {
+  const Real range = kSmoothingRange * smoothing_;
+  Real r0;
+  const Real rho0 = curvedBlendDistance(coords, x, l, p.targets[0], &r0);
+  curvedSegmentsNear(x, l, rho0 + range, segments_);
+  candidates_.clear();
+  Real rhoMin = std::numeric_limits<Real>::infinity();
+  for (LocalIndex s : segments_) {
+    const Real rho = curvedBlendDistance(coords, x, l, s, nullptr);
+    if (rho > rho0 + range) continue;
+    rhoMin = std::min(rhoMin, rho);
+    candidates_.emplace_back(rho, s);
+  }
+  keepBlendTargets(rhoMin + range, kMaxBlendTargets, p);
+}
+
 // The candidates with rho <= limit, lowest first, at most maxTargets (a
 // truncation is counted); the closest projection is always among them.
 void SurfaceInteraction::keepBlendTargets(Real limit, int maxTargets, InteractionPair& p) {
@@ -312,11 +389,12 @@ void SurfaceInteraction::forEachPoint(const Real* coords, Visit&& visit, FacetDo
         facetDone(k, e);
         continue;
       }
-      const Real* xa = coords + 2 * std::size_t(nodes[0]);
-      const Real* xb = coords + 2 * std::size_t(nodes[1]);
       for (int q = 0; q < rule_.size(); ++q) {
-        const Real xi = rule_.points[q];
-        const Real x[2] = {(1.0 - xi) * xa[0] + xi * xb[0], (1.0 - xi) * xa[1] + xi * xb[1]};
+        Real N[3], dN[3], x[2] = {0.0, 0.0};
+        if (npf == 3) lineShape<3>(rule_.points[q], N, dN);
+        else lineShape<2>(rule_.points[q], N, dN);
+        for (int a = 0; a < npf; ++a)
+          for (int i = 0; i < 2; ++i) x[i] += N[a] * coords[2 * std::size_t(nodes[a]) + i];
         visit(k, e, q, x);
       }
       facetDone(k, e);
@@ -350,7 +428,17 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
   searchedSmoothing_ = smoothing_;
   ++summary_.numSearches;
 
-  const std::vector<char> near = bodiesWithin(coords, cutoff_);
+  for (int l = 0; l < nb; ++l) {
+    if (!curved(l)) continue;
+    const mesh::Surface& sl = surfaces_[l];
+    Real& dev = chordDeviation_[l] = 0.0;
+    for (LocalIndex s = 0; s < sl.numFacets(); ++s) {
+      const LocalIndex* n = &sl.facets[3 * std::size_t(s)];
+      dev = std::max(dev, line3ChordDeviation(coords + 2 * std::size_t(n[0]), coords + 2 * std::size_t(n[1]),
+                                              coords + 2 * std::size_t(n[2])));
+    }
+  }
+  const std::vector<char> near = bodiesWithin(coords, cutoff_ + *std::max_element(chordDeviation_.begin(), chordDeviation_.end()));
   for (int l = 0; l < nb; ++l) {
     bool needed = false;
     for (int k = 0; k < nb; ++k) needed = needed || near[std::size_t(k) * nb + l];
@@ -370,17 +458,21 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
       ++summary_.numQuadraturePoints;
       const std::size_t point = pointIndex(k, e, q);
       LocalIndex& hint = hints_[point * nb + l];
-      const Projection pr = search_[l]->project(x, cutoff_, hint);
+      const Projection pr = search_[l]->project(x, cutoff_ + chordDeviation_[l], hint);
       hint = pr.facet;
-      if (!pr.found()) {
+      const auto [r, closest] = !pr.found() ? std::pair<Real, LocalIndex>{0.0, -1}
+                                : curved(l)  ? closestCurvedSegment(coords, x, l, pr)
+                                             : std::pair<Real, LocalIndex>{pr.distance, pr.facet};
+      if (closest < 0) {
         ++summary_.numBeyondCutoff;
         continue;
       }
       InteractionPair p{k, e, q, l};
-      p.targets[0] = pr.facet;
+      p.targets[0] = closest;
       if (smoothing_ > 0.0) {
-        if (dim_ == 2) findTargets(coords, x, l, pr.distance, p);
-        else findTargets3D(coords, x, l, pr.facet, p);
+        if (dim_ == 3) findTargets3D(coords, x, l, pr.facet, p);
+        else if (curved(l)) findCurvedTargets(coords, x, l, p);
+        else findTargets(coords, x, l, r, p);
       }
       pairs_.push_back(p);
     }
@@ -500,6 +592,7 @@ PairState SurfaceInteraction::evaluatePair(const Real* coords, const Interaction
 template <class P>
 PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* coords, const InteractionPair& p,
                                                PairContribution& out, bool withTangent) const {
+  if (curved(p.body) || curved(p.otherBody)) return evaluateCurvedPair(potential, coords, p, out, withTangent);
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& sl = surfaces_[p.otherBody];
   out.dim = 2;
@@ -606,6 +699,100 @@ PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* c
   return st[closest];
 }
 
+template <class P>
+PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real* coords, const InteractionPair& p,
+                                                 PairContribution& out, bool withTangent) const {
+  const mesh::Surface& sk = surfaces_[p.body];
+  const mesh::Surface& sl = surfaces_[p.otherBody];
+  const int ne = sk.nodesPerFacet, ns = sl.nodesPerFacet, nf = 2 * ne, nz = 2 * (ne + 2 * ns), nt = p.numTargets;
+  out.dim = 2;
+  out.numRowNodes = ne;
+  int nc = ne;
+  for (int a = 0; a < ne; ++a) out.rowNodes[a] = out.colNodes[a] = sk.facets[std::size_t(p.facet) * ne + a];
+  auto column = [&](LocalIndex node) {  // index of node in out.colNodes, appended if new
+    int c = 0;
+    while (c < nc && out.colNodes[c] != node) ++c;
+    if (c == nc) out.colNodes[nc++] = node;
+    return c;
+  };
+  const auto law = this->law(potential, p.body, p.otherBody);
+  const Real xi = rule_.points[p.qp], w = rule_.weights[p.qp];
+  const bool axi = options_.formulation == Formulation::Axisymmetric;
+  const Real* dA = referenceAreaOf(p);
+  const Real delta = nt > 1 ? smoothing_ : 0.0;
+  Real x[2] = {0.0, 0.0};
+  {
+    Real N[3], dN[3];
+    if (ne == 3) lineShape<3>(xi, N, dN);
+    else lineShape<2>(xi, N, dN);
+    for (int a = 0; a < ne; ++a)
+      for (int i = 0; i < 2; ++i) x[i] += N[a] * coords[2 * std::size_t(out.rowNodes[a]) + i];
+  }
+  constexpr int kz = 18;  // the most z entries: 2 (3 + 2 * 3)
+  Real f[kMaxBlendTargets][6], rho[kMaxBlendTargets], K[kMaxBlendTargets][6 * kz], Jrho[kMaxBlendTargets][kz];
+  int colOf[kMaxBlendTargets][kz];  // column of z entry j
+  PairState st[kMaxBlendTargets];
+  int closest = 0;
+  for (int t = 0; t < nt; ++t) {
+    // z: the point's segment, the target, and the target's neighbour at the vertex x projects onto
+    Real z[kz], eta, foot[2];
+    int region;
+    const LocalIndex* target = &sl.facets[std::size_t(p.targets[t]) * ns];
+    for (int a = 0; a < ne; ++a)
+      for (int i = 0; i < 2; ++i) z[2 * a + i] = coords[2 * std::size_t(out.rowNodes[a]) + i], colOf[t][2 * a + i] = 2 * a + i;
+    for (int a = 0; a < ns; ++a) {
+      const int c = column(target[a]);
+      for (int i = 0; i < 2; ++i) z[nf + 2 * a + i] = coords[2 * std::size_t(target[a]) + i], colOf[t][nf + 2 * a + i] = 2 * c + i;
+    }
+    if (ns == 3) projectOntoCurve<3>(x, z + nf, eta, foot, region);
+    else projectOntoCurve<2>(x, z + nf, eta, foot, region);
+    const LocalIndex n = delta > 0.0 && region != 0 ? neighbours_[p.otherBody][2 * std::size_t(p.targets[t]) + region - 1] : -1;
+    int neighbourEnd = -1;
+    for (int a = 0; a < ns; ++a) {  // the neighbour's nodes (a copy of the target's when none)
+      const LocalIndex node = n >= 0 ? sl.facets[std::size_t(n) * ns + a] : target[a];
+      const int c = n >= 0 ? column(node) : colOf[t][nf + 2 * a] / 2;
+      for (int i = 0; i < 2; ++i) z[nf + 2 * ns + 2 * a + i] = coords[2 * std::size_t(node) + i], colOf[t][nf + 2 * ns + 2 * a + i] = 2 * c + i;
+      if (n >= 0 && a < 2 && node == target[region - 1]) neighbourEnd = a;
+    }
+    Real* Kt = withTangent ? K[t] : nullptr;
+    auto run = [&](auto form, auto e, auto s) {
+      return method3CurvedPair<decltype(form)::value, decltype(e)::value, decltype(s)::value>(
+          z, xi, w, law, neighbourEnd, delta, dA, f[t], rho[t], Kt, Jrho[t]);
+    };
+    using Axi = std::integral_constant<Formulation, Formulation::Axisymmetric>;
+    using Plane = std::integral_constant<Formulation, Formulation::PlaneStrain>;
+    using Two = std::integral_constant<int, 2>;
+    using Three = std::integral_constant<int, 3>;
+    auto byTarget = [&](auto form, auto e) { return ns == 3 ? run(form, e, Three{}) : run(form, e, Two{}); };
+    auto byPoint = [&](auto form) { return ne == 3 ? byTarget(form, Three{}) : byTarget(form, Two{}); };
+    st[t] = axi ? byPoint(Axi{}) : byPoint(Plane{});
+    bool finite = true;
+    for (int i = 0; i < nf; ++i) finite = finite && std::isfinite(f[t][i]);
+    if (!(st[t].distance > 0.0) || !finite) throwContact(p, p.targets[t], st[t].distance);
+    if (rho[t] < rho[closest]) closest = t;
+  }
+  out.numColNodes = nc;
+  Real wt[kMaxBlendTargets] = {1.0}, sum = 0.0;
+  if (nt > 1) {
+    for (int t = 0; t < nt; ++t) sum += (wt[t] = std::exp(-(rho[t] - rho[closest]) / delta));
+    for (int t = 0; t < nt; ++t) wt[t] /= sum;
+  }
+  for (int i = 0; i < nf; ++i) {
+    out.f[i] = 0.0;
+    for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];
+  }
+  if (!withTangent) return st[closest];
+  // as the straight segments' blend: K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta]
+  for (int i = 0; i < nf; ++i)
+    for (int c = 0; c < 2 * nc; ++c) out.K[i][c] = 0.0;
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < nf; ++i) {
+      const Real g = nt > 1 ? wt[t] * (out.f[i] - f[t][i]) / delta : 0.0;
+      for (int j = 0; j < nz; ++j) out.K[i][colOf[t][j]] += wt[t] * K[t][i * nz + j] + g * Jrho[t][j];
+    }
+  return st[closest];
+}
+
 void SurfaceInteraction::setReferenceConfiguration(const Real* coords) {
   std::vector<Real> areas(surfaces_.empty() ? 0 : pointIndex(numBodies() - 1, surfaces_.back().numFacets(), 0));
   for (int k = 0; k < numBodies(); ++k) {
@@ -624,12 +811,17 @@ void SurfaceInteraction::setReferenceConfiguration(const Real* coords) {
           const Real m[3] = {g[0][1] * g[1][2] - g[0][2] * g[1][1], g[0][2] * g[1][0] - g[0][0] * g[1][2],
                              g[0][0] * g[1][1] - g[0][1] * g[1][0]};
           dA = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * fq.weight;
-        } else {  // |T| w, times 2 pi X_0 in axisymmetry, as da of Method3Kernel.hpp
-          const Real* a = coords + 2 * std::size_t(nodes[0]);
-          const Real* b = coords + 2 * std::size_t(nodes[1]);
-          const Real xi = rule_.points[q];
-          dA = std::hypot(b[0] - a[0], b[1] - a[1]) * rule_.weights[q];
-          if (options_.formulation == Formulation::Axisymmetric) dA *= 2.0 * kPi * ((1.0 - xi) * a[0] + xi * b[0]);
+        } else {  // |T| w, times 2 pi X_0 in axisymmetry, as da of Method3Kernel.hpp (T = dX/dxi)
+          Real N[3], dN[3], X[2] = {0.0, 0.0}, T[2] = {0.0, 0.0};
+          if (npf == 3) lineShape<3>(rule_.points[q], N, dN);
+          else lineShape<2>(rule_.points[q], N, dN);
+          for (int a = 0; a < npf; ++a)
+            for (int i = 0; i < 2; ++i) {
+              X[i] += N[a] * coords[2 * std::size_t(nodes[a]) + i];
+              T[i] += dN[a] * coords[2 * std::size_t(nodes[a]) + i];
+            }
+          dA = std::hypot(T[0], T[1]) * rule_.weights[q];
+          if (options_.formulation == Formulation::Axisymmetric) dA *= 2.0 * kPi * X[0];
         }
         if (!(dA > 0.0) || !std::isfinite(dA))
           throw InputError("surface interaction: facet " + std::to_string(e) + " of body " + std::to_string(k) +
@@ -676,9 +868,26 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
   // than m, with a facet within d + 4 m of its present position; m < skin/2
   // with skin = radius - cutoff, and a point farther than the radius stays
   // beyond the cutoff. 2D blends reach (kSmoothingRange + 1) delta farther.
+  // Curved segments: their chords are searched (within the chord deviation
+  // of the curve), and a node moving by m moves the curve by up to 1.25 m
+  // (the largest sum of |N_a| of a Line3).
   const Real blend = dim_ == 2 ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
-  const Real skin = std::max(radius - cutoff_, 0.0);
-  const std::vector<char> bodies = bodiesWithin(coords, radius + blend);
+  std::vector<Real> deviation(nb, 0.0);
+  for (int l = 0; l < nb; ++l) {
+    if (!curved(l)) continue;
+    const mesh::Surface& sl = surfaces_[l];
+    for (LocalIndex s = 0; s < sl.numFacets(); ++s) {
+      const LocalIndex* n = &sl.facets[3 * std::size_t(s)];
+      deviation[l] = std::max(deviation[l], line3ChordDeviation(coords + 2 * std::size_t(n[0]),
+                                                                coords + 2 * std::size_t(n[1]),
+                                                                coords + 2 * std::size_t(n[2])));
+    }
+  }
+  const Real margin = 2.0 * *std::max_element(deviation.begin(), deviation.end());
+  bool anyCurved = false;
+  for (int l = 0; l < nb; ++l) anyCurved = anyCurved || curved(l);
+  const Real skin = std::max(radius - cutoff_, 0.0) * (anyCurved ? 1.25 : 1.0);
+  const std::vector<char> bodies = bodiesWithin(coords, cutoff_ + skin + blend + margin);
   std::vector<std::unique_ptr<ClosestPointSearch>> search(nb);
   for (int l = 0; l < nb; ++l) {
     search[l] = makeClosestPointSearch(dim_, options_.search);
@@ -689,13 +898,21 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
   auto visit = [&](int k, LocalIndex, int, const Real* x) {
     for (int l = 0; l < nb; ++l) {
       if (!bodies[std::size_t(k) * nb + l]) continue;
-      const Projection pr = search[l]->project(x, radius + blend);
+      const Real dev = 2.0 * deviation[l];
+      const Projection pr = search[l]->project(x, cutoff_ + skin + blend + dev);
       if (!pr.found()) continue;
       near.clear();
-      search[l]->facetsNearPoint(x, pr.distance + 2.0 * skin + blend, near);
-      const mesh::Surface& tl = targets_[l];
-      for (LocalIndex s : near)
+      search[l]->facetsNearPoint(x, pr.distance + 2.0 * skin + blend + 2.0 * dev, near);
+      // a curved segment (its chords 2s, 2s + 1) brings its three nodes, and those of its neighbours
+      const mesh::Surface& tl = curved(l) ? surfaces_[l] : targets_[l];
+      for (LocalIndex c : near) {
+        const LocalIndex s = curved(l) ? c / 2 : c;
         for (int j = 0; j < tl.nodesPerFacet; ++j) reach.push_back(tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
+        if (!curved(l)) continue;
+        for (int end = 0; end < 2; ++end)
+          if (const LocalIndex n = neighbours_[l][2 * std::size_t(s) + end]; n >= 0)
+            for (int j = 0; j < 3; ++j) reach.push_back(tl.facets[3 * std::size_t(n) + j]);
+      }
     }
   };
   // once per facet: its nodes with its own and with every node it can reach (each pair once)

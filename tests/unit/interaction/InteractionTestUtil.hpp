@@ -32,6 +32,25 @@ inline mesh::Surface addPolyline(std::vector<Real>& coords, const std::vector<Re
   return s;
 }
 
+/// Appends the open chain of n curved segments (Line3: end, end, mid) on the
+/// curve c(s), s in [0, 1], to `coords` (mid nodes at the parameter midpoints;
+/// body on the left of increasing s) and returns its surface.
+inline mesh::Surface addCurvedChain(std::vector<Real>& coords, const std::function<void(Real, Real&, Real&)>& curve,
+                                    int n, int body) {
+  mesh::Surface s;
+  s.body = body;
+  s.nodesPerFacet = 3;
+  const LocalIndex first = LocalIndex(coords.size() / 2);
+  for (int i = 0; i <= 2 * n; ++i) {  // node 2i: end i, node 2i + 1: the mid node of segment i
+    Real x, y;
+    curve(Real(i) / (2 * n), x, y);
+    coords.push_back(x);
+    coords.push_back(y);
+  }
+  for (int i = 0; i < n; ++i) s.facets.insert(s.facets.end(), {first + 2 * i, first + 2 * i + 2, first + 2 * i + 1});
+  return s;
+}
+
 /// Points of a curve c(s), s in [0, 1], at n + 1 parameter values.
 inline std::vector<Real> samplePolyline(const std::function<void(Real, Real&, Real&)>& curve, int n) {
   std::vector<Real> p(2 * std::size_t(n + 1));
@@ -45,7 +64,7 @@ inline std::vector<Real> assembleResidual(SurfaceInteraction& si, const std::vec
   si.evaluate(coords, c, false);
   std::vector<Real> f(coords.size(), 0.0);
   for (const PairContribution& p : c)
-    for (int a = 0; a < 2; ++a)
+    for (int a = 0; a < p.numRowNodes; ++a)
       for (int i = 0; i < 2; ++i) f[2 * p.rowNodes[a] + i] += p.f[2 * a + i];
   return f;
 }
@@ -57,7 +76,7 @@ inline std::map<std::pair<int, int>, Real> assembleTangent(SurfaceInteraction& s
   si.evaluate(coords, c, true);
   std::map<std::pair<int, int>, Real> K;
   for (const PairContribution& p : c)
-    for (int a = 0; a < 2; ++a)
+    for (int a = 0; a < p.numRowNodes; ++a)
       for (int i = 0; i < 2; ++i)
         for (int b = 0; b < p.numColNodes; ++b)
           for (int j = 0; j < 2; ++j)

@@ -49,6 +49,16 @@
 // the tangent includes dw_s = (w_s/delta)(-drho_s + sum_t w_t drho_t).
 // Candidates are the segments with rho_s <= rho_min + c delta
 // (c = kSmoothingRange), at most kMaxBlendTargets of them (lowest rho).
+//
+// Curved segments (2D, the Line3 facets of quadratic cells): a point of such
+// a segment lies on its curve, and a point of any body is projected onto
+// such a body's curved segments (Method3CurvedKernel.hpp), with the same
+// blend (the overshoot beyond a vertex measured along the segment's tangent
+// there). The search runs over the chords a-mid, mid-b of each curved
+// segment (targetSurface: segment s -> chords 2s, 2s + 1), whose distance
+// differs from the curve's by at most the chord deviation of the body
+// (line3ChordDeviation, refreshed at every search); every segment whose
+// chords come that close to the nearest is projected onto exactly.
 #include <Kokkos_Core.hpp>
 
 #include <array>
@@ -120,8 +130,8 @@ constexpr int kMaxBlendTargets3D = 8;
 /// candidates.
 constexpr Real kSmoothingRange = 30.0;
 /// Column nodes of one blended contribution: in 2D the point's segment
-/// nodes, two per target segment and the far node of a target's neighbour
-/// when the target projects onto their common vertex; in 3D the point's
+/// nodes, the nodes of each target segment and the other nodes of a target's
+/// neighbour when the target projects onto their common vertex; in 3D the point's
 /// facet nodes and three per target triangle (shared nodes are merged).
 constexpr int kMaxContributionNodes = 4 + 3 * kMaxBlendTargets3D;
 
@@ -152,7 +162,7 @@ constexpr int kMaxContributionColumns = 3 * kMaxContributionNodes;
 /// nodes, then the target triangle's three.
 struct PairContribution {
   int dim = 2;
-  int numRowNodes = 2;  ///< nodes of the point's facet: 2 (segment), 3 or 4
+  int numRowNodes = 2;  ///< nodes of the point's facet: 2 or 3 (segment), 3 or 4 (3D)
   LocalIndex rowNodes[4];
   int numColNodes = 4;
   LocalIndex colNodes[kMaxContributionNodes];
@@ -231,8 +241,9 @@ class SurfaceInteraction final : public Interaction {
   const mesh::Surface& surface(int body) const { return surfaces_[body]; }
   /// Spatial dimension (2 or 3): coordinates per node.
   int dim() const { return dim_; }
-  /// The facets other bodies' points are projected onto: the surface itself
-  /// in 2D, its triangles in 3D (quad4 facet f -> triangles 2f, 2f + 1).
+  /// The facets the closest-point search runs over: the surface itself in 2D
+  /// (the chords of curved segments: s -> 2s, 2s + 1), its triangles in 3D
+  /// (quad4 facet f -> triangles 2f, 2f + 1).
   const mesh::Surface& targetSurface(int body) const { return targets_[body]; }
   Real density(int body) const { return densities_[body]; }
   /// Absolute cutoff in use (scaled by the length scale).
@@ -352,6 +363,19 @@ class SurfaceInteraction final : public Interaction {
   void beginEvaluation();
   void accumulate(const InteractionPair& p, const PairState& st, const PairContribution& c);
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
+  /// 2D segments of body l have 3 nodes (curved).
+  bool curved(int l) const { return dim_ == 2 && surfaces_[l].nodesPerFacet == 3; }
+  /// The curved segments of body l whose chords come within `radius` of x (sorted, unique).
+  void curvedSegmentsNear(const Real x[2], int l, Real radius, std::vector<LocalIndex>& out);
+  /// The blend distance rho (r without smoothing) of the projection of x onto
+  /// segment s of body l, the distance r into *r.
+  Real curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r) const;
+  /// The closest curved segment of body l to x within the cutoff: (distance, segment), or segment -1.
+  std::pair<Real, LocalIndex> closestCurvedSegment(const Real* coords, const Real x[2], int l, const Projection& chord);
+  void findCurvedTargets(const Real* coords, const Real x[2], int l, InteractionPair& p);
+  template <class P>
+  PairState evaluateCurvedPair(const P& potential, const Real* coords, const InteractionPair& p,
+                               PairContribution& out, bool withTangent) const;
   void findTargets3D(const Real* coords, const Real x[3], int l, LocalIndex closest, InteractionPair& p);
   void keepBlendTargets(Real limit, int maxTargets, InteractionPair& p);
   template <class P>
@@ -403,9 +427,11 @@ class SurfaceInteraction final : public Interaction {
   std::vector<LocalIndex> hints_;        ///< [point * numBodies + other body]: last projection's facet, or -1
   std::vector<Real> referenceAreas_;     ///< [point]: dA (setReferenceConfiguration), empty until set
   std::vector<std::vector<LocalIndex>> neighbours_;  ///< [body][2 s + end]: segment sharing that node, or -1
+  std::vector<Real> chordDeviation_;  ///< [body]: largest distance of a curved segment from its chords (last search)
   std::vector<InteractionPair> pairs_;
   std::vector<std::vector<char>> evaluatedFacets_;  ///< [body][facet], empty: all (setEvaluatedFacets)
   std::vector<LocalIndex> near_;                        ///< scratch of findTargets
+  std::vector<LocalIndex> segments_;                    ///< scratch of the curved searches
   std::vector<std::pair<Real, LocalIndex>> candidates_;  ///< scratch of findTargets: (rho, segment)
   InteractionSummary summary_;
 };
