@@ -704,7 +704,7 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
                                                  PairContribution& out, bool withTangent) const {
   const mesh::Surface& sk = surfaces_[p.body];
   const mesh::Surface& sl = surfaces_[p.otherBody];
-  const int ne = sk.nodesPerFacet, ns = sl.nodesPerFacet, nf = 2 * ne, nz = 2 * (ne + 2 * ns), nt = p.numTargets;
+  const int ne = sk.nodesPerFacet, ns = sl.nodesPerFacet, nf = 2 * ne, nt = p.numTargets;
   out.dim = 2;
   out.numRowNodes = ne;
   int nc = ne;
@@ -731,6 +731,7 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
   constexpr int kz = 18;  // the most z entries: 2 (3 + 2 * 3)
   Real f[kMaxBlendTargets][6], rho[kMaxBlendTargets], K[kMaxBlendTargets][6 * kz], Jrho[kMaxBlendTargets][kz];
   int colOf[kMaxBlendTargets][kz];  // column of z entry j
+  int nz[kMaxBlendTargets];          // z entries of target t: without the neighbour when it plays no part
   PairState st[kMaxBlendTargets];
   int closest = 0;
   for (int t = 0; t < nt; ++t) {
@@ -748,16 +749,19 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
     else projectOntoCurve<2>(x, z + nf, eta, foot, region);
     const LocalIndex n = delta > 0.0 && region != 0 ? neighbours_[p.otherBody][2 * std::size_t(p.targets[t]) + region - 1] : -1;
     int neighbourEnd = -1;
-    for (int a = 0; a < ns; ++a) {  // the neighbour's nodes (a copy of the target's when none)
-      const LocalIndex node = n >= 0 ? sl.facets[std::size_t(n) * ns + a] : target[a];
-      const int c = n >= 0 ? column(node) : colOf[t][nf + 2 * a] / 2;
+    nz[t] = nf + 2 * ns * (n >= 0 ? 2 : 1);
+    for (int a = 0; n >= 0 && a < ns; ++a) {  // the neighbour's nodes
+      const LocalIndex node = sl.facets[std::size_t(n) * ns + a];
+      const int c = column(node);
       for (int i = 0; i < 2; ++i) z[nf + 2 * ns + 2 * a + i] = coords[2 * std::size_t(node) + i], colOf[t][nf + 2 * ns + 2 * a + i] = 2 * c + i;
-      if (n >= 0 && a < 2 && node == target[region - 1]) neighbourEnd = a;
+      if (a < 2 && node == target[region - 1]) neighbourEnd = a;
     }
     Real* Kt = withTangent ? K[t] : nullptr;
     auto run = [&](auto form, auto e, auto s) {
-      return method3CurvedPair<decltype(form)::value, decltype(e)::value, decltype(s)::value>(
-          z, xi, w, law, neighbourEnd, delta, dA, f[t], rho[t], Kt, Jrho[t]);
+      constexpr Formulation F = decltype(form)::value;
+      constexpr int NE = decltype(e)::value, NS = decltype(s)::value;
+      return n >= 0 ? method3CurvedPair<F, NE, NS, true>(z, xi, w, law, neighbourEnd, delta, dA, f[t], rho[t], Kt, Jrho[t])
+                    : method3CurvedPair<F, NE, NS, false>(z, xi, w, law, -1, delta, dA, f[t], rho[t], Kt, Jrho[t]);
     };
     using Axi = std::integral_constant<Formulation, Formulation::Axisymmetric>;
     using Plane = std::integral_constant<Formulation, Formulation::PlaneStrain>;
@@ -788,7 +792,7 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
   for (int t = 0; t < nt; ++t)
     for (int i = 0; i < nf; ++i) {
       const Real g = nt > 1 ? wt[t] * (out.f[i] - f[t][i]) / delta : 0.0;
-      for (int j = 0; j < nz; ++j) out.K[i][colOf[t][j]] += wt[t] * K[t][i * nz + j] + g * Jrho[t][j];
+      for (int j = 0; j < nz[t]; ++j) out.K[i][colOf[t][j]] += wt[t] * K[t][i * nz[t] + j] + g * Jrho[t][j];
     }
   return st[closest];
 }

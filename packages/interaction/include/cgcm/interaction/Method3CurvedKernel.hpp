@@ -237,14 +237,16 @@ inline void curvedPairResidual(const S* z, Real xi, Real weight, const Law& law,
 
 /// Evaluates one pair on curved (or straight) segments, z as in the header
 /// (the neighbour's slot is read only when neighbourEnd >= 0 and the
-/// projection is a vertex of s). f: 2 NE entries; rho: the blend distance
-/// (r without smoothing, delta <= 0). With K (may be null), K[i * nz + j] =
-/// df_i/dz_j and Jrho[j] = drho/dz_j, nz = 2 (NE + 2 NS). The caller checks
-/// state.distance > 0.
-template <Formulation Form, int NE, int NS, class Law>
+/// projection is a vertex of s; without it, WithNeighbour = false, z ends
+/// after s and neighbourEnd must be -1). f: 2 NE entries; rho: the blend
+/// distance (r without smoothing, delta <= 0). With K (may be null),
+/// K[i * nz + j] = df_i/dz_j and Jrho[j] = drho/dz_j, nz = 2 (NE + 2 NS),
+/// 2 (NE + NS) without the neighbour. The caller checks state.distance > 0.
+template <Formulation Form, int NE, int NS, bool WithNeighbour = true, class Law>
 PairState method3CurvedPair(const Real* z, Real xi, Real weight, const Law& law, int neighbourEnd, Real delta,
                             const Real* referenceArea, Real* f, Real& rho, Real* K, Real* Jrho) {
-  constexpr int nz = 2 * (NE + 2 * NS), nf = 2 * NE;
+  constexpr int nz = 2 * (NE + (WithNeighbour ? 2 : 1) * NS), nf = 2 * NE;
+  if (!WithNeighbour) neighbourEnd = -1;
   Real Nv[NE], dN[NE], x[2] = {0.0, 0.0};
   lineShape<NE>(xi, Nv, dN);
   for (int a = 0; a < NE; ++a)
