@@ -102,6 +102,22 @@ function(cgcm_check)
   _cgcm_labels(${test} "${ARG_SANITIZE}")
 endfunction()
 
+# cgcm_ranks_agree()
+# The case's deck on one rank and on two (cgcm_run AS np1, AS np2 RANKS 2),
+# and the checks <suite>_<case>_np1_vs_np2, the same load curve (u, P, gap,
+# P_lower to 1e-7 relative, 1e-12 absolute), and
+# <suite>_<case>_results_np1_vs_np2, the same results.e (exo_compare, 1e-7
+# relative, 1e-10 absolute: the residuals, round-off, differ below it).
+function(cgcm_ranks_agree)
+  cgcm_run(AS np1)
+  cgcm_run(AS np2 RANKS 2)
+  cgcm_check(AS np1_vs_np2 FIXTURES ${name}_np1 ${name}_np2
+             COMMAND ${compare_csv} ${run}_np1/load_curve.csv ${run}_np2/load_curve.csv --columns u,P,gap,P_lower
+                     --rel 1e-7 --abs 1e-12)
+  cgcm_check(AS results_np1_vs_np2 FIXTURES ${name}_np1 ${name}_np2
+             COMMAND exo_compare --rel 1e-7 --abs 1e-10 ${run}_np1/results.e ${run}_np2/results.e)
+endfunction()
+
 # cgcm_bad_input([DECK <file>] [ARGS <overrides...>] [SANITIZE] REGEX <regex>)
 # Bad input: cgcm on the deck (Output/Directory=${run}, then ARGS) stops with
 # exit code 2 before any solving, its stderr matching "cgcm: error: .*<regex>".

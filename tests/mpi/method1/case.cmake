@@ -5,10 +5,4 @@
 # the same results.e, the interaction force on each node and the traction of
 # the surface nodes included (each rank's pairs exported to the rows' owners,
 # gathered on rank 0).
-cgcm_run(AS np1)
-cgcm_run(AS np2 RANKS 2)
-cgcm_check(AS np1_vs_np2 FIXTURES ${name}_np1 ${name}_np2
-           COMMAND ${compare_csv} ${run}_np1/load_curve.csv ${run}_np2/load_curve.csv --columns u,P,gap,P_lower
-                   --rel 1e-7 --abs 1e-12)
-cgcm_check(AS results_np1_vs_np2 FIXTURES ${name}_np1 ${name}_np2
-           COMMAND exo_compare --rel 1e-7 --abs 1e-10 ${run}_np1/results.e ${run}_np2/results.e)
+cgcm_ranks_agree()
