@@ -300,43 +300,44 @@ TEST(CurvedSegments, StraightLine3SurfaceActsAsTheLine2One) {
 
 namespace {
 
+// int_{-h}^{h} g(t) dt: composite 16-point Gauss on 400 panels.
+template <class G>
+Real integrateSymmetric(const G& g, Real h) {
+  const GaussRule rule = gaussLegendreUnit(16);
+  const int panels = 400;
+  Real sum = 0.0;
+  for (int p = 0; p < panels; ++p)
+    for (int q = 0; q < rule.size(); ++q) sum += rule.weights[q] * g(-h + 2.0 * h * (p + rule.points[q]) / panels);
+  return sum * 2.0 * h / panels;
+}
+
 // The Method 3 force on the circle x^2 + (y - c)^2 = R^2 over |theta| <= theta_max from
 // its lower arc's points (outward normal n = (sin theta, -cos theta), x = R sin theta,
-// y = c - R cos theta) against the flat y = 0: -f_y = T(y) (rbar . n) da with rbar = (0, 1),
-// da = R dtheta: the force applied to the circle, -f_y = int T(y) cos(theta) R dtheta;
-// composite 16-point Gauss on 400 panels.
+// y = c - R cos theta) against the flat y = 0: rbar = (0, 1), rbar . n = -cos theta,
+// da = R dtheta, and the force applied to the circle -f_y = -T(y) (rbar . n) R dtheta.
 template <class Law>
 Real circlePointsOnFlat(const Law& law, Real R, Real c, Real thetaMax) {
-  const GaussRule g = gaussLegendreUnit(16);
-  const int panels = 400;
-  Real F = 0.0;
-  for (int p = 0; p < panels; ++p)
-    for (int q = 0; q < g.size(); ++q) {
-      const Real th = -thetaMax + 2.0 * thetaMax * (p + g.points[q]) / panels;
-      Real T, dT;
-      law(c - R * std::cos(th), T, dT);
-      F += -T * (-std::cos(th)) * R * g.weights[q] * 2.0 * thetaMax / panels;  // -f_y = -(T (rbar.n) da rbar_y)
-    }
-  return F;
+  return integrateSymmetric(
+      [&](Real th) {
+        Real T, dT;
+        law(c - R * std::cos(th), T, dT);
+        return T * std::cos(th) * R;
+      },
+      thetaMax);
 }
 
 // The flat's points (x, 0), |x| <= a, outward normal (0, 1), against the same circle:
-// r = |x - C| - R, rbar = (x - C)/|x - C|, rbar . n = -c/|x - C|; -f_y on the flat.
+// r = |x - C| - R, rbar = (x - C)/|x - C|, rbar_y = rbar . n = -c/|x - C|; -f_y on the flat.
 template <class Law>
 Real flatPointsOnCircle(const Law& law, Real R, Real c, Real a) {
-  const GaussRule g = gaussLegendreUnit(16);
-  const int panels = 400;
-  Real F = 0.0;
-  for (int p = 0; p < panels; ++p)
-    for (int q = 0; q < g.size(); ++q) {
-      const Real x = -a + 2.0 * a * (p + g.points[q]) / panels;
-      const Real d = std::hypot(x, c);
-      Real T, dT;
-      law(d - R, T, dT);
-      const Real rby = -c / d, cosA = -c / d;
-      F += -T * cosA * rby * g.weights[q] * 2.0 * a / panels;
-    }
-  return F;
+  return integrateSymmetric(
+      [&](Real x) {
+        const Real d = std::hypot(x, c);
+        Real T, dT;
+        law(d - R, T, dT);
+        return -T * (c / d) * (c / d);
+      },
+      a);
 }
 
 }  // namespace
