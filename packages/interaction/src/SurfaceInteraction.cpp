@@ -747,6 +747,7 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
     }
     if (ns == 3) projectOntoCurve<3>(x, z + nf, eta, foot, region);
     else projectOntoCurve<2>(x, z + nf, eta, foot, region);
+    const CurveFoot projection{eta, region};  // the kernel takes it: one projection per target
     const LocalIndex n = delta > 0.0 && region != 0 ? neighbours_[p.otherBody][2 * std::size_t(p.targets[t]) + region - 1] : -1;
     int neighbourEnd = -1;
     nz[t] = nf + 2 * ns * (n >= 0 ? 2 : 1);
@@ -760,8 +761,10 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
     auto run = [&](auto form, auto e, auto s) {
       constexpr Formulation F = decltype(form)::value;
       constexpr int NE = decltype(e)::value, NS = decltype(s)::value;
-      return n >= 0 ? method3CurvedPair<F, NE, NS, true>(z, xi, w, law, neighbourEnd, delta, dA, f[t], rho[t], Kt, Jrho[t])
-                    : method3CurvedPair<F, NE, NS, false>(z, xi, w, law, -1, delta, dA, f[t], rho[t], Kt, Jrho[t]);
+      return n >= 0 ? method3CurvedPair<F, NE, NS, true>(z, xi, w, law, projection, neighbourEnd, delta, dA, f[t],
+                                                         rho[t], Kt, Jrho[t])
+                    : method3CurvedPair<F, NE, NS, false>(z, xi, w, law, projection, -1, delta, dA, f[t], rho[t], Kt,
+                                                          Jrho[t]);
     };
     using Axi = std::integral_constant<Formulation, Formulation::Axisymmetric>;
     using Plane = std::integral_constant<Formulation, Formulation::PlaneStrain>;

@@ -235,36 +235,50 @@ inline void curvedPairResidual(const S* z, Real xi, Real weight, const Law& law,
 
 }  // namespace detail
 
-/// Evaluates one pair on curved (or straight) segments, z as in the header
-/// (the neighbour's slot is read only when neighbourEnd >= 0 and the
-/// projection is a vertex of s; without it, WithNeighbour = false, z ends
-/// after s and neighbourEnd must be -1). f: 2 NE entries; rho: the blend
-/// distance (r without smoothing, delta <= 0). With K (may be null),
-/// K[i * nz + j] = df_i/dz_j and Jrho[j] = drho/dz_j, nz = 2 (NE + 2 NS),
-/// 2 (NE + NS) without the neighbour. The caller checks state.distance > 0.
-template <Formulation Form, int NE, int NS, bool WithNeighbour = true, class Law>
-PairState method3CurvedPair(const Real* z, Real xi, Real weight, const Law& law, int neighbourEnd, Real delta,
-                            const Real* referenceArea, Real* f, Real& rho, Real* K, Real* Jrho) {
-  constexpr int nz = 2 * (NE + (WithNeighbour ? 2 : 1) * NS), nf = 2 * NE;
-  if (!WithNeighbour) neighbourEnd = -1;
-  Real Nv[NE], dN[NE], x[2] = {0.0, 0.0};
+/// The closest point of a target segment: its local coordinate and region (projectOntoCurve).
+struct CurveFoot {
+  Real eta = 0.0;
+  int region = 0;
+};
+
+/// The point of segment e at xi (z as in the header) projected onto the target s (NS nodes).
+template <int NE, int NS>
+CurveFoot footOnTarget(const Real* z, Real xi) {
+  Real Nv[NE], dN[NE], x[2] = {0.0, 0.0}, p[2];
   lineShape<NE>(xi, Nv, dN);
   for (int a = 0; a < NE; ++a)
     for (int i = 0; i < 2; ++i) x[i] += Nv[a] * z[2 * a + i];
-  Real eta, p[2];
-  int region;
-  projectOntoCurve<NS>(x, z + nf, eta, p, region);
+  CurveFoot foot;
+  projectOntoCurve<NS>(x, z + 2 * NE, foot.eta, p, foot.region);
+  return foot;
+}
+
+/// Evaluates one pair on curved (or straight) segments, z as in the header,
+/// at the target's closest point `foot` (footOnTarget; the caller that needs
+/// the region first, to pick the neighbour, projects once). The neighbour's
+/// slot is read only when neighbourEnd >= 0 and the projection is a vertex
+/// of s; without it, WithNeighbour = false, z ends after s and neighbourEnd
+/// must be -1. f: 2 NE entries; rho: the blend distance (r without
+/// smoothing, delta <= 0). With K (may be null), K[i * nz + j] = df_i/dz_j
+/// and Jrho[j] = drho/dz_j, nz = 2 (NE + 2 NS), 2 (NE + NS) without the
+/// neighbour. The caller checks state.distance > 0.
+template <Formulation Form, int NE, int NS, bool WithNeighbour = true, class Law>
+PairState method3CurvedPair(const Real* z, Real xi, Real weight, const Law& law, const CurveFoot& foot,
+                            int neighbourEnd, Real delta, const Real* referenceArea, Real* f, Real& rho, Real* K,
+                            Real* Jrho) {
+  constexpr int nz = 2 * (NE + (WithNeighbour ? 2 : 1) * NS), nf = 2 * NE;
+  if (!WithNeighbour) neighbourEnd = -1;
   PairState st;
   if (K == nullptr) {
-    detail::curvedPairResidual<Form, NE, NS>(z, xi, weight, law, eta, region, neighbourEnd, delta, referenceArea, f,
-                                             rho, st);
+    detail::curvedPairResidual<Form, NE, NS>(z, xi, weight, law, foot.eta, foot.region, neighbourEnd, delta,
+                                             referenceArea, f, rho, st);
     return st;
   }
   using Fad = Sacado::Fad::SFad<Real, nz>;
   Fad zf[nz], ff[nf], rf;
   for (int j = 0; j < nz; ++j) zf[j] = Fad(nz, j, z[j]);
-  detail::curvedPairResidual<Form, NE, NS>(zf, xi, weight, law, eta, region, neighbourEnd, delta, referenceArea, ff,
-                                           rf, st);
+  detail::curvedPairResidual<Form, NE, NS>(zf, xi, weight, law, foot.eta, foot.region, neighbourEnd, delta,
+                                           referenceArea, ff, rf, st);
   for (int i = 0; i < nf; ++i) {
     f[i] = ff[i].val();
     for (int j = 0; j < nz; ++j) K[i * nz + j] = ff[i].dx(j);
@@ -273,6 +287,14 @@ PairState method3CurvedPair(const Real* z, Real xi, Real weight, const Law& law,
   if (Jrho != nullptr)
     for (int j = 0; j < nz; ++j) Jrho[j] = rf.dx(j);
   return st;
+}
+
+/// The same, projecting first.
+template <Formulation Form, int NE, int NS, bool WithNeighbour = true, class Law>
+PairState method3CurvedPair(const Real* z, Real xi, Real weight, const Law& law, int neighbourEnd, Real delta,
+                            const Real* referenceArea, Real* f, Real& rho, Real* K, Real* Jrho) {
+  return method3CurvedPair<Form, NE, NS, WithNeighbour>(z, xi, weight, law, footOnTarget<NE, NS>(z, xi),
+                                                        neighbourEnd, delta, referenceArea, f, rho, K, Jrho);
 }
 
 }  // namespace cgcm::interaction
