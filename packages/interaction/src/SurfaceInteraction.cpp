@@ -428,6 +428,7 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
   searchedSmoothing_ = smoothing_;
   ++summary_.numSearches;
 
+  Real largestDeviation = 0.0;
   for (int l = 0; l < nb; ++l) {
     if (!curved(l)) continue;
     const mesh::Surface& sl = surfaces_[l];
@@ -437,8 +438,9 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
       dev = std::max(dev, line3ChordDeviation(coords + 2 * std::size_t(n[0]), coords + 2 * std::size_t(n[1]),
                                               coords + 2 * std::size_t(n[2])));
     }
+    largestDeviation = std::max(largestDeviation, dev);
   }
-  const std::vector<char> near = bodiesWithin(coords, cutoff_ + *std::max_element(chordDeviation_.begin(), chordDeviation_.end()));
+  const std::vector<char> near = bodiesWithin(coords, cutoff_ + largestDeviation);
   for (int l = 0; l < nb; ++l) {
     bool needed = false;
     for (int k = 0; k < nb; ++k) needed = needed || near[std::size_t(k) * nb + l];
@@ -880,6 +882,7 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
   // (the largest sum of |N_a| of a Line3).
   const Real blend = dim_ == 2 ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
   std::vector<Real> deviation(nb, 0.0);
+  Real margin = 0.0;
   for (int l = 0; l < nb; ++l) {
     if (!curved(l)) continue;
     const mesh::Surface& sl = surfaces_[l];
@@ -889,8 +892,8 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
                                                                 coords + 2 * std::size_t(n[1]),
                                                                 coords + 2 * std::size_t(n[2])));
     }
+    margin = std::max(margin, 2.0 * deviation[l]);
   }
-  const Real margin = 2.0 * *std::max_element(deviation.begin(), deviation.end());
   bool anyCurved = false;
   for (int l = 0; l < nb; ++l) anyCurved = anyCurved || curved(l);
   const Real skin = std::max(radius - cutoff_, 0.0) * (anyCurved ? 1.25 : 1.0);
