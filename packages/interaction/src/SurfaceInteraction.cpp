@@ -245,7 +245,8 @@ void SurfaceInteraction::curvedSegmentsNear(const Real x[2], int l, Real radius,
   out.erase(std::unique(out.begin(), out.end()), out.end());  // the chords of a segment are adjacent
 }
 
-Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r) const {
+Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r,
+                                             bool withPenalty) const {
   const mesh::Surface& sl = surfaces_[l];
   Real y[6], v[6], eta, p[2];
   int region;
@@ -254,7 +255,7 @@ Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real x[2]
   const Real d = std::sqrt(projectOntoCurve<3>(x, y, eta, p, region));
   if (r != nullptr) *r = d;
   const LocalIndex n = region == 0 ? -1 : neighbours_[l][2 * std::size_t(s) + region - 1];
-  if (smoothing_ <= 0.0 || n < 0) return d;
+  if (!withPenalty || smoothing_ <= 0.0 || n < 0) return d;
   const LocalIndex vertex = sl.facets[3 * std::size_t(s) + region - 1];
   for (int a = 0; a < 3; ++a)
     for (int i = 0; i < 2; ++i) v[2 * a + i] = coords[2 * std::size_t(sl.facets[3 * std::size_t(n) + a]) + i];
@@ -271,8 +272,7 @@ std::pair<Real, LocalIndex> SurfaceInteraction::closestCurvedSegment(const Real*
   curvedSegmentsNear(x, l, chord.distance + chordDeviation_[l], segments_);
   std::pair<Real, LocalIndex> best{std::numeric_limits<Real>::infinity(), -1};
   for (LocalIndex s : segments_) {
-    Real r;
-    curvedBlendDistance(coords, x, l, s, &r);
+    const Real r = curvedBlendDistance(coords, x, l, s, nullptr, false);
     if (r < best.first) best = {r, s};
   }
   if (!(best.first <= cutoff_)) best.second = -1;
@@ -282,8 +282,7 @@ std::pair<Real, LocalIndex> SurfaceInteraction::closestCurvedSegment(const Real*
 // As findTargets on the curved segments of body l.
 void SurfaceInteraction::findCurvedTargets(const Real* coords, const Real x[2], int l, InteractionPair& p) {
   const Real range = kSmoothingRange * smoothing_;
-  Real r0;
-  const Real rho0 = curvedBlendDistance(coords, x, l, p.targets[0], &r0);
+  const Real rho0 = curvedBlendDistance(coords, x, l, p.targets[0], nullptr);
   curvedSegmentsNear(x, l, rho0 + range, segments_);
   candidates_.clear();
   Real rhoMin = std::numeric_limits<Real>::infinity();
@@ -493,6 +492,18 @@ namespace {
   throw NumericalError(os.str());
 }
 
+// The softmin weights w_t = exp(-(rho_t - rho_min)/delta) / sum (header) of nt blend targets
+// (one target: w = 1), the same for segments, curved segments and triangles.
+void blendWeights(const Real* rho, int nt, int closest, Real delta, Real* w) {
+  if (nt == 1) {
+    w[0] = 1.0;
+    return;
+  }
+  Real sum = 0.0;
+  for (int t = 0; t < nt; ++t) sum += (w[t] = std::exp(-(rho[t] - rho[closest]) / delta));
+  for (int t = 0; t < nt; ++t) w[t] /= sum;
+}
+
 bool allFinite(const Real f[4]) {
   return std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2]) && std::isfinite(f[3]);
 }
@@ -526,7 +537,7 @@ PairState SurfaceInteraction::evaluatePair3D(const P& potential, const Real* coo
   const Real* dA = referenceAreaOf(p);
   // One target: its contribution. Several: the softmin blend over rho_t
   // (header), K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta].
-  Real f[kMaxBlendTargets3D][12], rho[kMaxBlendTargets3D], Jrho[kMaxBlendTargets3D][21];
+  Real f[kMaxBlendTargets3D][12], rho[kMaxBlendTargets3D] = {}, Jrho[kMaxBlendTargets3D][21];
   Real Kt[kMaxBlendTargets3D][12 * 21];  // [t][3 npf x nz]
   PairState st[kMaxBlendTargets3D];
   int closest = 0;
@@ -553,11 +564,8 @@ PairState SurfaceInteraction::evaluatePair3D(const P& potential, const Real* coo
                       : method3BlendDistance3D<3>(z, q, st[t].region, smoothing_, g);
     if (rho[t] < rho[closest]) closest = t;
   }
-  Real w[kMaxBlendTargets3D] = {1.0}, sum = 0.0;
-  if (nt > 1) {
-    for (int t = 0; t < nt; ++t) sum += (w[t] = std::exp(-(rho[t] - rho[closest]) / smoothing_));
-    for (int t = 0; t < nt; ++t) w[t] /= sum;
-  }
+  Real w[kMaxBlendTargets3D];
+  blendWeights(rho, nt, closest, smoothing_, w);
   const int nf = 3 * npf;
   for (int i = 0; i < nf; ++i) {
     out.f[i] = 0.0;
@@ -650,7 +658,7 @@ PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* c
   // header). The targets come from the last updatePairs; the weights use the
   // current coordinates. Jrho[t]: d rho_t / dz in columns of out.colNodes.
   constexpr int kCols = 2 * kMaxContributionNodes;
-  Real f[kMaxBlendTargets][4], K[kMaxBlendTargets][4][8], rho[kMaxBlendTargets];
+  Real f[kMaxBlendTargets][4], K[kMaxBlendTargets][4][8], rho[kMaxBlendTargets] = {};
   Real Jrho[kMaxBlendTargets][kCols] = {};
   PairState st[kMaxBlendTargets];
   const Real delta = smoothing_;
@@ -674,9 +682,8 @@ PairState SurfaceInteraction::evaluatePairWith(const P& potential, const Real* c
     }
   }
   out.numColNodes = nc;
-  Real wt[kMaxBlendTargets], sum = 0.0;
-  for (int t = 0; t < nt; ++t) sum += (wt[t] = std::exp(-(rho[t] - rho[closest]) / delta));
-  for (int t = 0; t < nt; ++t) wt[t] /= sum;
+  Real wt[kMaxBlendTargets];
+  blendWeights(rho, nt, closest, delta, wt);
   for (int i = 0; i < 4; ++i) {
     out.f[i] = 0.0;
     for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];
@@ -731,7 +738,7 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
       for (int i = 0; i < 2; ++i) x[i] += N[a] * coords[2 * std::size_t(out.rowNodes[a]) + i];
   }
   constexpr int kz = 18;  // the most z entries: 2 (3 + 2 * 3)
-  Real f[kMaxBlendTargets][6], rho[kMaxBlendTargets], K[kMaxBlendTargets][6 * kz], Jrho[kMaxBlendTargets][kz];
+  Real f[kMaxBlendTargets][6], rho[kMaxBlendTargets] = {}, K[kMaxBlendTargets][6 * kz], Jrho[kMaxBlendTargets][kz];
   int colOf[kMaxBlendTargets][kz];  // column of z entry j
   int nz[kMaxBlendTargets];          // z entries of target t: without the neighbour when it plays no part
   PairState st[kMaxBlendTargets];
@@ -781,11 +788,8 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
     if (rho[t] < rho[closest]) closest = t;
   }
   out.numColNodes = nc;
-  Real wt[kMaxBlendTargets] = {1.0}, sum = 0.0;
-  if (nt > 1) {
-    for (int t = 0; t < nt; ++t) sum += (wt[t] = std::exp(-(rho[t] - rho[closest]) / delta));
-    for (int t = 0; t < nt; ++t) wt[t] /= sum;
-  }
+  Real wt[kMaxBlendTargets];
+  blendWeights(rho, nt, closest, delta, wt);
   for (int i = 0; i < nf; ++i) {
     out.f[i] = 0.0;
     for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];

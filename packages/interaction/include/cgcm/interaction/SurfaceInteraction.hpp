@@ -367,9 +367,10 @@ class SurfaceInteraction final : public Interaction {
   bool curved(int l) const { return dim_ == 2 && surfaces_[l].nodesPerFacet == 3; }
   /// The curved segments of body l whose chords come within `radius` of x (sorted, unique).
   void curvedSegmentsNear(const Real x[2], int l, Real radius, std::vector<LocalIndex>& out);
-  /// The blend distance rho (r without smoothing) of the projection of x onto
-  /// segment s of body l, the distance r into *r.
-  Real curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r) const;
+  /// The blend distance rho (r without smoothing or withPenalty = false) of the
+  /// projection of x onto segment s of body l, the distance r into *r (may be null).
+  Real curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r,
+                           bool withPenalty = true) const;
   /// The closest curved segment of body l to x within the cutoff: (distance, segment), or segment -1.
   std::pair<Real, LocalIndex> closestCurvedSegment(const Real* coords, const Real x[2], int l, const Projection& chord);
   void findCurvedTargets(const Real* coords, const Real x[2], int l, InteractionPair& p);
