@@ -142,14 +142,8 @@ solver::ProblemSetup buildProblem(const ParameterList& deck) {
   const MemoryLimit memory = memoryLimit(deck.sublist("Output"));
   if (const auto size = estimateBuiltInMesh(deck, s.formulation))
     checkSize(*size, memory, type == "block" ? "Geometry/Block/Cells X, Y, Z" : "Geometry/Mesh Refinement");
-  // asked for as soon as the geometry knows its bodies interact, before a built-in mesh is made: a
-  // Geometry/Element Order the interaction cannot take is refused then
-  const auto contactDistance = [&] {
-    const auto& interaction = readInteraction(deck, s);
-    const int order = mesh::elementOrder(geometry).order;
-    interaction.checkElementOrder(order, s.formulation, "Geometry/Element Order = " + std::to_string(order) + " makes quadratic cells");
-    return interaction.contactDistance();
-  };
+  // asked for as soon as the geometry knows its bodies interact, before a built-in mesh is made
+  const auto contactDistance = [&] { return readInteraction(deck, s).contactDistance(); };
   attachModel(s, mesh::buildModel(geometry, s.formulation, contactDistance), deck);
   const mesh::Mesh& m = *s.model.mesh;
   if (type == "gmsh")

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "cgcm/core/Error.hpp"
 
@@ -55,8 +56,9 @@ InteractionPart::Outcome SurfaceInteractionPart::assemble(const Vector& u, const
     colMap = J->getColMap();
   }
   Outcome out;
-  auto scatter = [&](const interaction::PairContribution& c) {
-    LocalIndex rows[12], cols[interaction::kMaxContributionColumns];
+  auto scatter = [&](const auto& c) {  // a PairContribution or, on curved 3D facets, a CurvedPairContribution
+    using Contribution = std::decay_t<decltype(c)>;
+    LocalIndex rows[Contribution::kMaxRows], cols[Contribution::kMaxColumns];
     const int nrows = dim_ * c.numRowNodes;
     for (int a = 0; a < c.numRowNodes; ++a)
       for (int i = 0; i < dim_; ++i) rows[dim_ * a + i] = overlap.getLocalElement(dofs_->dof(c.rowNodes[a], i));

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
   std::vector<Real> fglob(coords.size(), 0.0);
   Real ksum = 0.0;
   for (int r = 0; r < reps; ++r)
-    si.evaluate(coords.data(), [&](const PairContribution& c) {
+    si.evaluate(coords.data(), [&](const auto& c) {
       for (int a = 0; a < 2; ++a)
         for (int i = 0; i < 2; ++i) fglob[2 * c.rowNodes[a] + i] += c.f[2 * a + i];
       for (int i = 0; i < 4; ++i)

@@ -212,25 +212,7 @@ std::vector<ScalarParameter> InteractionSetup::scalarParameters(std::shared_ptr<
            }}};
 }
 
-void InteractionSetup::checkElementOrder(int order, Formulation formulation, const std::string& where) const {
-  // Method 1 integrates over the (curved) quadratic cells with their own shape functions and
-  // bounds them by boxes that hold them; Method 3 projects onto curved segments in 2D
-  // (Method3CurvedKernel.hpp), while in 3D its points and closest points stand on flat facets.
-  if (order == 1 || method == Method::VolumePair || formulation != Formulation::ThreeD) return;
-  std::string linear;
-  for (const CellTypeInfo& row : kCellTypes)
-    if (row.order == 1 && row.dim == 3) linear += (linear.empty() ? "" : ", ") + std::string(row.name);
-  throw InputError("Interaction/Method = \"half-space point\" takes linear cells in 3D (" + linear + "), but " + where +
-                   ": the interaction on curved 3D facets (TRI6, QUAD8, QUAD9) is not implemented; set "
-                   "Geometry/Element Order = 1 or Interaction/Method = \"volume pair\" (a body that interacts with "
-                   "nothing, e.g. Geometry/Type = \"block\", takes order 2; in 2D and axisymmetry both methods take "
-                   "order 2)");
-}
-
 void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation) const {
-  for (const auto& b : mesh.blocks)
-    checkElementOrder(cellTypeInfo(b.type).order, formulation,
-                      "body \"" + b.name + "\" has " + mesh::cellTypeName(b.type) + " cells");
   // Method 1 integrates over the cells the mesh has: a symmetry plane (or, in
   // plane strain, the symmetry line of the built-in half models) would drop
   // the mirror half of every body from the interaction.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cgcm/core/Error.hpp"
+#include "cgcm/interaction/FacetShape.hpp"
 
 namespace cgcm::interaction {
 
@@ -51,23 +52,36 @@ std::vector<Orbit> symmetricTriangleRule(int degree) {
           {0.101286507323456, 0.101286507323456, 0.797426985353087, 0.125939180544827}};
 }
 
-FacetPoint trianglePoint(Real s, Real t, Real weight) {
+/// The point (s, t) of weight w on a facet with N nodes: its shape functions.
+template <int N>
+FacetPoint facetPointOf(Real s, Real t, Real weight) {
   FacetPoint q;
-  q.N[0] = 1.0 - s - t, q.N[1] = s, q.N[2] = t;
-  q.dN[0][0] = -1.0, q.dN[0][1] = 1.0, q.dN[0][2] = 0.0;
-  q.dN[1][0] = -1.0, q.dN[1][1] = 0.0, q.dN[1][2] = 1.0;
+  Real Nv[N], dN[2][N];
+  facetShape<N>(s, t, Nv, dN);
+  for (int a = 0; a < N; ++a) q.N[a] = Nv[a], q.dN[0][a] = dN[0][a], q.dN[1][a] = dN[1][a];
+  q.xi[0] = s, q.xi[1] = t;
   q.weight = weight;
   return q;
+}
+
+FacetPoint facetPoint(int nodes, Real s, Real t, Real weight) {
+  switch (nodes) {
+    case 3: return facetPointOf<3>(s, t, weight);
+    case 4: return facetPointOf<4>(s, t, weight);
+    case 6: return facetPointOf<6>(s, t, weight);
+    case 8: return facetPointOf<8>(s, t, weight);
+    default: return facetPointOf<9>(s, t, weight);
+  }
 }
 
 }  // namespace
 
 std::vector<FacetPoint> facetQuadrature(int nodes, int n) {
-  if (nodes != 3 && nodes != 4)
-    throw InputError("facet quadrature: facets have 3 or 4 nodes, got " + std::to_string(nodes));
+  if (nodes != 3 && nodes != 4 && nodes != 6 && nodes != 8 && nodes != 9)
+    throw InputError("facet quadrature: facets have 3, 4, 6, 8 or 9 nodes, got " + std::to_string(nodes));
   const GaussRule g = gaussLegendreUnit(n);
   std::vector<FacetPoint> out;
-  if (nodes == 3) {
+  if (nodes == 3 || nodes == 6) {
     // n points per direction ask for degree 2n - 1, as the n x n rule on a quadrilateral
     if (n <= 3) {
       for (const Orbit& o : symmetricTriangleRule(2 * n - 1)) {
@@ -80,7 +94,7 @@ std::vector<FacetPoint> facetQuadrature(int nodes, int n) {
           for (const auto& [s0, t0] : seen) known = known || (s0 == s && t0 == t);
           if (known) continue;
           seen.emplace_back(s, t);
-          out.push_back(trianglePoint(s, t, 0.5 * o.weight));  // reference area 1/2
+          out.push_back(facetPoint(nodes, s, t, 0.5 * o.weight));  // reference area 1/2
         } while (std::next_permutation(perm, perm + 3));
       }
       return out;
@@ -93,24 +107,15 @@ std::vector<FacetPoint> facetQuadrature(int nodes, int n) {
         const Real u = gu.points[i], s = u, t = g.points[j] * (1.0 - u);  // (u, v) -> (u, v (1 - u))
         const Real bary[3] = {1.0 - s - t, s, t}, w = gu.weights[i] * g.weights[j] * (1.0 - u) / 6.0;
         int perm[3] = {0, 1, 2};
-        do out.push_back(trianglePoint(bary[perm[1]], bary[perm[2]], w));
+        do out.push_back(facetPoint(nodes, bary[perm[1]], bary[perm[2]], w));
         while (std::next_permutation(perm, perm + 3));
       }
     return out;
   }
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      FacetPoint q;
-      const Real xi = 2.0 * g.points[i] - 1.0, eta = 2.0 * g.points[j] - 1.0;
-      const Real sx[4] = {-1.0, 1.0, 1.0, -1.0}, sy[4] = {-1.0, -1.0, 1.0, 1.0};
-      for (int a = 0; a < 4; ++a) {
-        q.N[a] = 0.25 * (1.0 + sx[a] * xi) * (1.0 + sy[a] * eta);
-        q.dN[0][a] = 0.25 * sx[a] * (1.0 + sy[a] * eta);
-        q.dN[1][a] = 0.25 * sy[a] * (1.0 + sx[a] * xi);
-      }
-      q.weight = 4.0 * g.weights[i] * g.weights[j];
-      out.push_back(q);
-    }
+    for (int j = 0; j < n; ++j)
+      out.push_back(facetPoint(nodes, 2.0 * g.points[i] - 1.0, 2.0 * g.points[j] - 1.0,
+                               4.0 * g.weights[i] * g.weights[j]));
   return out;
 }
 

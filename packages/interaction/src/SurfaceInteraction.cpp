@@ -10,6 +10,7 @@
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/interaction/Method3CurvedKernel.hpp"
+#include "cgcm/interaction/Method3CurvedKernel3D.hpp"
 #include "cgcm/interaction/Method3Kernel3D.hpp"
 
 namespace cgcm::interaction {
@@ -25,6 +26,44 @@ mesh::Surface chords(const mesh::Surface& s) {
     if (!s.facetCells.empty()) c.facetCells.insert(c.facetCells.end(), 2, s.facetCells[e]);
   }
   return c;
+}
+
+/// f(std::integral_constant<int, N>) for the nodes N = 6, 8, 9 of a curved 3D facet.
+template <class F>
+decltype(auto) withCurvedFacet(int nodes, F&& f) {
+  switch (nodes) {
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 8: return f(std::integral_constant<int, 8>{});
+    default: return f(std::integral_constant<int, 9>{});
+  }
+}
+
+/// The triangles of the covers of every curved 3D facet (facet s -> triangles T s .. T s + T - 1 over
+/// the points P s .. P s + P - 1 of SurfaceInteraction::cover).
+mesh::Surface coverTriangles(const mesh::Surface& s) {
+  mesh::Surface c{s.body, 3, {}, {}};
+  withCurvedFacet(s.nodesPerFacet, [&](auto n) {
+    constexpr int N = decltype(n)::value, P = kCoverPoints<N>, T = kCoverTriangles<N>;
+    for (LocalIndex e = 0; e < s.numFacets(); ++e)
+      for (int t = 0; t < T; ++t) {
+        const int* tri = coverTriangle<N>(t);
+        for (int a = 0; a < 3; ++a) c.facets.push_back(LocalIndex(P * e + tri[a]));
+        if (!s.facetCells.empty()) c.facetCells.push_back(s.facetCells[e]);
+      }
+  });
+  return c;
+}
+
+/// The most a point of a curved facet moves per unit motion of its nodes: max over the facet of
+/// sum |N_a| (Line3 5/4, TRI6 5/3, QUAD8 3 at its centre, QUAD9 (5/4)^2).
+Real lebesgueConstant(int dim, int nodesPerFacet) {
+  if (dim == 2) return nodesPerFacet == 3 ? 1.25 : 1.0;
+  switch (nodesPerFacet) {
+    case 6: return 5.0 / 3.0;
+    case 8: return 3.0;
+    case 9: return 25.0 / 16.0;
+    default: return 1.0;
+  }
 }
 
 }  // namespace
@@ -47,10 +86,18 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   dim_ = options_.formulation == Formulation::ThreeD ? 3 : 2;
   for (std::size_t k = 0; k < surfaces_.size(); ++k) {
     const int npf = surfaces_[k].nodesPerFacet;
-    if (surfaces_[k].numFacets() > 0 && (dim_ == 2 ? npf != 2 && npf != 3 : npf != 3 && npf != 4))
-      throw InputError("surface interaction: " + std::string(dim_ == 2 ? "2D surfaces need 2 or 3 nodes per facet"
-                                                                       : "3D surfaces need 3 or 4 nodes per facet") +
+    if (surfaces_[k].numFacets() > 0 &&
+        (dim_ == 2 ? npf != 2 && npf != 3 : npf != 3 && npf != 4 && npf != 6 && npf != 8 && npf != 9))
+      throw InputError("surface interaction: " +
+                       std::string(dim_ == 2 ? "2D surfaces need 2 or 3 nodes per facet"
+                                             : "3D surfaces need 3, 4 (flat) or 6, 8, 9 (curved) nodes per facet") +
                        " (body " + std::to_string(k) + " has " + std::to_string(npf) + ")");
+    // the 3D kernels pair flat facets with flat ones, curved with curved
+    if (dim_ == 3 && k > 0 && surfaces_[k].numFacets() > 0 && surfaces_[0].numFacets() > 0 &&
+        (npf > 4) != (surfaces_[0].nodesPerFacet > 4))
+      throw InputError("surface interaction: in 3D the bodies' facets must be all flat or all curved (body 0 has " +
+                       std::to_string(surfaces_[0].nodesPerFacet) + " nodes per facet, body " + std::to_string(k) +
+                       " has " + std::to_string(npf) + ")");
     if (!(densities_[k] > 0.0) || !std::isfinite(densities_[k]))
       throw InputError("surface interaction: density of body " + std::to_string(k) +
                        " must be finite and > 0");
@@ -88,14 +135,16 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   std::sort(surfaceNodes_.begin(), surfaceNodes_.end());
   surfaceNodes_.erase(std::unique(surfaceNodes_.begin(), surfaceNodes_.end()), surfaceNodes_.end());
   if (dim_ == 3) {
-    for (const mesh::Surface& sk : surfaces_) {
-      targets_.push_back(mesh::triangulated(sk));
-      facetRules_.push_back(facetQuadrature(sk.nodesPerFacet == 4 ? 4 : 3, options_.quadraturePoints));
+    for (std::size_t k = 0; k < surfaces_.size(); ++k) {
+      const mesh::Surface& sk = surfaces_[k];
+      targets_.push_back(curved(int(k)) ? coverTriangles(sk) : mesh::triangulated(sk));
+      facetRules_.push_back(facetQuadrature(sk.nodesPerFacet, options_.quadraturePoints));
     }
   } else {
     for (const mesh::Surface& sk : surfaces_) targets_.push_back(sk.nodesPerFacet == 3 ? chords(sk) : sk);
   }
-  chordDeviation_.assign(surfaces_.size(), 0.0);
+  coverDeviation_.assign(surfaces_.size(), 0.0);
+  coverPoints_.resize(surfaces_.size());
   std::size_t points = 0;
   for (std::size_t k = 0; k < surfaces_.size(); ++k) {
     firstPoint_.push_back(points);
@@ -237,17 +286,56 @@ void SurfaceInteraction::findTargets(const Real* coords, const Real x[2], int l,
   keepBlendTargets(rhoMin + range, kMaxBlendTargets, p);
 }
 
-void SurfaceInteraction::curvedSegmentsNear(const Real x[2], int l, Real radius, std::vector<LocalIndex>& out) {
-  near_.clear();
-  search_[l]->facetsNearPoint(x, radius + chordDeviation_[l], near_);
-  out.clear();
-  for (LocalIndex c : near_) out.push_back(c / 2);
-  out.erase(std::unique(out.begin(), out.end()), out.end());  // the chords of a segment are adjacent
+int SurfaceInteraction::coverPieces(int l) const {
+  return dim_ == 2 ? 2 : surfaces_[l].nodesPerFacet == 6 ? kCoverTriangles<6> : kCoverTriangles<9>;
 }
 
-Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r,
+Real SurfaceInteraction::cover(const Real* coords, int l, std::vector<Real>& points) const {
+  if (!curved(l)) return 0.0;
+  const mesh::Surface& sl = surfaces_[l];
+  Real dev = 0.0;
+  if (dim_ == 2) {  // the chords are the segments' own nodes
+    for (LocalIndex s = 0; s < sl.numFacets(); ++s) {
+      const LocalIndex* n = &sl.facets[3 * std::size_t(s)];
+      dev = std::max(dev, line3ChordDeviation(coords + 2 * std::size_t(n[0]), coords + 2 * std::size_t(n[1]),
+                                              coords + 2 * std::size_t(n[2])));
+    }
+    return dev;
+  }
+  withCurvedFacet(sl.nodesPerFacet, [&](auto n) {
+    constexpr int N = decltype(n)::value, P = kCoverPoints<N>;
+    points.resize(3 * P * std::size_t(sl.numFacets()));
+    for (LocalIndex s = 0; s < sl.numFacets(); ++s) {
+      Real y[3 * N];
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < 3; ++i) y[3 * a + i] = coords[3 * std::size_t(sl.facets[N * std::size_t(s) + a]) + i];
+      coverPoints<N>(y, reinterpret_cast<Real(*)[3]>(&points[3 * P * std::size_t(s)]));
+      dev = std::max(dev, coverDeviation<N>(y));
+    }
+  });
+  return dev;
+}
+
+void SurfaceInteraction::curvedFacetsNear(const Real* x, int l, Real radius, std::vector<LocalIndex>& out) {
+  near_.clear();
+  search_[l]->facetsNearPoint(x, radius + coverDeviation_[l], near_);
+  out.clear();
+  const int pieces = coverPieces(l);
+  for (LocalIndex c : near_) out.push_back(c / pieces);
+  out.erase(std::unique(out.begin(), out.end()), out.end());  // the pieces of a facet are adjacent
+}
+
+Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real* x, int l, LocalIndex s, Real* r,
                                              bool withPenalty) const {
   const mesh::Surface& sl = surfaces_[l];
+  if (dim_ == 3)
+    return withCurvedFacet(sl.nodesPerFacet, [&](auto n) {
+      constexpr int N = decltype(n)::value;
+      Real y[3 * N];
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < 3; ++i) y[3 * a + i] = coords[3 * std::size_t(sl.facets[N * std::size_t(s) + a]) + i];
+      return facetBlendDistance<N>(x, y, withPenalty ? smoothing_ : 0.0, r);
+    });
   Real y[6], v[6], eta, p[2];
   int region;
   for (int a = 0; a < 3; ++a)
@@ -264,12 +352,12 @@ Real SurfaceInteraction::curvedBlendDistance(const Real* coords, const Real x[2]
   return d + smoothing_ * os * os * std::exp(-on * on);
 }
 
-// The closest curved segment: the chords' nearest lies within the chord
-// deviation of the curves, so every segment whose chords come within twice
+// The closest curved facet: the cover's nearest lies within the cover
+// deviation of the facets, so every facet whose cover comes within twice
 // that of x is a candidate.
-std::pair<Real, LocalIndex> SurfaceInteraction::closestCurvedSegment(const Real* coords, const Real x[2], int l,
-                                                                     const Projection& chord) {
-  curvedSegmentsNear(x, l, chord.distance + chordDeviation_[l], segments_);
+std::pair<Real, LocalIndex> SurfaceInteraction::closestCurvedFacet(const Real* coords, const Real* x, int l,
+                                                                   const Projection& cover) {
+  curvedFacetsNear(x, l, cover.distance + coverDeviation_[l], segments_);
   std::pair<Real, LocalIndex> best{std::numeric_limits<Real>::infinity(), -1};
   for (LocalIndex s : segments_) {
     const Real r = curvedBlendDistance(coords, x, l, s, nullptr, false);
@@ -279,11 +367,11 @@ std::pair<Real, LocalIndex> SurfaceInteraction::closestCurvedSegment(const Real*
   return best;
 }
 
-// As findTargets on the curved segments of body l.
-void SurfaceInteraction::findCurvedTargets(const Real* coords, const Real x[2], int l, InteractionPair& p) {
+// As findTargets (2D) and findTargets3D on the curved facets of body l.
+void SurfaceInteraction::findCurvedTargets(const Real* coords, const Real* x, int l, InteractionPair& p) {
   const Real range = kSmoothingRange * smoothing_;
   const Real rho0 = curvedBlendDistance(coords, x, l, p.targets[0], nullptr);
-  curvedSegmentsNear(x, l, rho0 + range, segments_);
+  curvedFacetsNear(x, l, rho0 + range, segments_);
   candidates_.clear();
   Real rhoMin = std::numeric_limits<Real>::infinity();
   for (LocalIndex s : segments_) {
@@ -292,7 +380,7 @@ void SurfaceInteraction::findCurvedTargets(const Real* coords, const Real x[2], 
     rhoMin = std::min(rhoMin, rho);
     candidates_.emplace_back(rho, s);
   }
-  keepBlendTargets(rhoMin + range, kMaxBlendTargets, p);
+  keepBlendTargets(rhoMin + range, dim_ == 3 ? kMaxBlendTargets3D : kMaxBlendTargets, p);
 }
 
 // The candidates with rho <= limit, lowest first, at most maxTargets (a
@@ -429,22 +517,16 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
 
   Real largestDeviation = 0.0;
   for (int l = 0; l < nb; ++l) {
-    if (!curved(l)) continue;
-    const mesh::Surface& sl = surfaces_[l];
-    Real& dev = chordDeviation_[l] = 0.0;
-    for (LocalIndex s = 0; s < sl.numFacets(); ++s) {
-      const LocalIndex* n = &sl.facets[3 * std::size_t(s)];
-      dev = std::max(dev, line3ChordDeviation(coords + 2 * std::size_t(n[0]), coords + 2 * std::size_t(n[1]),
-                                              coords + 2 * std::size_t(n[2])));
-    }
-    largestDeviation = std::max(largestDeviation, dev);
+    coverDeviation_[l] = cover(coords, l, coverPoints_[l]);
+    largestDeviation = std::max(largestDeviation, coverDeviation_[l]);
   }
   const std::vector<char> near = bodiesWithin(coords, cutoff_ + largestDeviation);
   for (int l = 0; l < nb; ++l) {
     bool needed = false;
     for (int k = 0; k < nb; ++k) needed = needed || near[std::size_t(k) * nb + l];
     // a body no other comes near is not searched (an empty tree costs nothing)
-    search_[l]->build(coords, needed ? targets_[l] : mesh::Surface{l, dim_, {}, {}});
+    search_[l]->build(dim_ == 3 && curved(l) ? coverPoints_[l].data() : coords,
+                      needed ? targets_[l] : mesh::Surface{l, dim_, {}, {}});
   }
   pairs_.clear();
   summary_.numQuadraturePoints = 0;
@@ -459,10 +541,10 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
       ++summary_.numQuadraturePoints;
       const std::size_t point = pointIndex(k, e, q);
       LocalIndex& hint = hints_[point * nb + l];
-      const Projection pr = search_[l]->project(x, cutoff_ + chordDeviation_[l], hint);
+      const Projection pr = search_[l]->project(x, cutoff_ + coverDeviation_[l], hint);
       hint = pr.facet;
       const auto [r, closest] = !pr.found() ? std::pair<Real, LocalIndex>{0.0, -1}
-                                : curved(l)  ? closestCurvedSegment(coords, x, l, pr)
+                                : curved(l)  ? closestCurvedFacet(coords, x, l, pr)
                                              : std::pair<Real, LocalIndex>{pr.distance, pr.facet};
       if (closest < 0) {
         ++summary_.numBeyondCutoff;
@@ -471,8 +553,8 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
       InteractionPair p{k, e, q, l};
       p.targets[0] = closest;
       if (smoothing_ > 0.0) {
-        if (dim_ == 3) findTargets3D(coords, x, l, pr.facet, p);
-        else if (curved(l)) findCurvedTargets(coords, x, l, p);
+        if (curved(l)) findCurvedTargets(coords, x, l, p);
+        else if (dim_ == 3) findTargets3D(coords, x, l, pr.facet, p);
         else findTargets(coords, x, l, r, p);
       }
       pairs_.push_back(p);
@@ -484,10 +566,10 @@ void SurfaceInteraction::updatePairs(const Real* coords) {
 
 namespace {
 
-[[noreturn]] void throwContact(const InteractionPair& p, LocalIndex target, Real r) {
+[[noreturn]] void throwContact(const InteractionPair& p, LocalIndex target, Real r, const char* facet = "segment") {
   std::ostringstream os;
-  os << "surface interaction: quadrature point " << p.qp << " of segment " << p.facet << " of body " << p.body
-     << " lies on segment " << target << " of body " << p.otherBody << " (r = " << r
+  os << "surface interaction: quadrature point " << p.qp << " of " << facet << " " << p.facet << " of body " << p.body
+     << " lies on " << facet << " " << target << " of body " << p.otherBody << " (r = " << r
      << "): the surfaces touch or interpenetrate";
   throw NumericalError(os.str());
 }
@@ -589,14 +671,24 @@ PairState SurfaceInteraction::evaluatePair3D(const P& potential, const Real* coo
   return st[closest];
 }
 
-PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p,
-                                           PairContribution& out, bool withTangent) const {
+PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p, PairContribution& out,
+                                           bool withTangent) const {
+  if (curvedFacets3D())
+    throw std::logic_error("surface interaction: pairs of curved 3D facets fill a CurvedPairContribution");
   return std::visit(
       [&](const auto& potential) {
         return dim_ == 3 ? evaluatePair3D(potential, coords, p, out, withTangent)
                          : evaluatePairWith(potential, coords, p, out, withTangent);
       },
       kernel_);
+}
+
+PairState SurfaceInteraction::evaluatePair(const Real* coords, const InteractionPair& p, CurvedPairContribution& out,
+                                           bool withTangent) const {
+  if (!curvedFacets3D())
+    throw std::logic_error("surface interaction: a CurvedPairContribution holds a pair of curved 3D facets");
+  return std::visit(
+      [&](const auto& potential) { return evaluateCurvedPair3D(potential, coords, p, out, withTangent); }, kernel_);
 }
 
 template <class P>
@@ -806,6 +898,72 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
   return st[closest];
 }
 
+template <class P>
+PairState SurfaceInteraction::evaluateCurvedPair3D(const P& potential, const Real* coords, const InteractionPair& p,
+                                                   CurvedPairContribution& out, bool withTangent) const {
+  const mesh::Surface& sk = surfaces_[p.body];
+  const mesh::Surface& sl = surfaces_[p.otherBody];
+  const int ne = sk.nodesPerFacet, ns = sl.nodesPerFacet, nf = 3 * ne, nt = p.numTargets, nz = 3 * (ne + ns);
+  out.dim = 3;
+  out.numRowNodes = ne;
+  int nc = ne;
+  for (int a = 0; a < ne; ++a) out.rowNodes[a] = out.colNodes[a] = sk.facets[std::size_t(p.facet) * ne + a];
+  auto column = [&](LocalIndex node) {  // index of node in out.colNodes, appended if new
+    int c = 0;
+    while (c < nc && out.colNodes[c] != node) ++c;
+    if (c == nc) out.colNodes[nc++] = node;
+    return c;
+  };
+  const auto law = this->law(potential, p.body, p.otherBody);
+  const FacetPoint& q = facetRules_[p.body][p.qp];
+  const Real* dA = referenceAreaOf(p);
+  const Real delta = nt > 1 ? smoothing_ : 0.0;
+  constexpr int kz = 54;  // the most z entries: 3 (9 + 9)
+  Real f[kMaxBlendTargets3D][27], rho[kMaxBlendTargets3D] = {}, Jrho[kMaxBlendTargets3D][kz];
+  Real K[kMaxBlendTargets3D][27 * kz];
+  int colOf[kMaxBlendTargets3D][kz];  // column of z entry j
+  PairState st[kMaxBlendTargets3D];
+  int closest = 0;
+  for (int t = 0; t < nt; ++t) {
+    Real z[kz];
+    const LocalIndex* target = &sl.facets[std::size_t(p.targets[t]) * ns];
+    for (int a = 0; a < ne; ++a)
+      for (int i = 0; i < 3; ++i) z[3 * a + i] = coords[3 * std::size_t(out.rowNodes[a]) + i], colOf[t][3 * a + i] = 3 * a + i;
+    for (int a = 0; a < ns; ++a) {
+      const int c = column(target[a]);
+      for (int i = 0; i < 3; ++i) z[nf + 3 * a + i] = coords[3 * std::size_t(target[a]) + i], colOf[t][nf + 3 * a + i] = 3 * c + i;
+    }
+    Real* Kt = withTangent ? K[t] : nullptr;
+    auto run = [&](auto e, auto s) {
+      constexpr int NF = decltype(e)::value, NS = decltype(s)::value;
+      const PatchFoot foot = facetFootOnTarget<NF, NS>(z, q);  // one projection per target
+      return method3CurvedPair3D<NF, NS>(z, q, law, foot, delta, dA, f[t], rho[t], Kt, Jrho[t]);
+    };
+    st[t] = withCurvedFacet(ne, [&](auto e) { return withCurvedFacet(ns, [&](auto s) { return run(e, s); }); });
+    bool finite = true;
+    for (int i = 0; i < nf; ++i) finite = finite && std::isfinite(f[t][i]);
+    if (!(st[t].distance > 0.0) || !finite) throwContact(p, p.targets[t], st[t].distance, "facet");
+    if (rho[t] < rho[closest]) closest = t;
+  }
+  out.numColNodes = nc;
+  Real wt[kMaxBlendTargets3D];
+  blendWeights(rho, nt, closest, delta, wt);
+  for (int i = 0; i < nf; ++i) {
+    out.f[i] = 0.0;
+    for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];
+  }
+  if (!withTangent) return st[closest];
+  // as the flat facets' blend: K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta]
+  for (int i = 0; i < nf; ++i)
+    for (int c = 0; c < 3 * nc; ++c) out.K[i][c] = 0.0;
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < nf; ++i) {
+      const Real g = nt > 1 ? wt[t] * (out.f[i] - f[t][i]) / delta : 0.0;
+      for (int j = 0; j < nz; ++j) out.K[i][colOf[t][j]] += wt[t] * K[t][i * nz + j] + g * Jrho[t][j];
+    }
+  return st[closest];
+}
+
 void SurfaceInteraction::setReferenceConfiguration(const Real* coords) {
   std::vector<Real> areas(surfaces_.empty() ? 0 : pointIndex(numBodies() - 1, surfaces_.back().numFacets(), 0));
   for (int k = 0; k < numBodies(); ++k) {
@@ -856,22 +1014,12 @@ void SurfaceInteraction::beginEvaluation() {
   summary_.numVertexProjections = 0;
 }
 
-void SurfaceInteraction::accumulate(const InteractionPair& p, const PairState& st,
-                                    const PairContribution& c) {
+void SurfaceInteraction::accumulate(const InteractionPair& p, const PairState& st, const Real* f, int rows,
+                                    int dim) {
   auto& R = summary_.resultant[p.body];
-  for (int a = 0; a < c.numRowNodes; ++a)
-    for (int i = 0; i < c.dim; ++i) R[i] -= c.f[c.dim * a + i];
+  for (int r = 0; r < rows; ++r) R[r % dim] -= f[r];
   summary_.minDistance = std::min(summary_.minDistance, st.distance);
   if (st.region != 0) ++summary_.numVertexProjections;
-}
-
-void SurfaceInteraction::evaluate(const Real* coords, std::vector<PairContribution>& out, bool withTangent) {
-  out.resize(pairs_.size());
-  beginEvaluation();
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const PairState st = evaluatePair(coords, pairs_[i], out[i], withTangent);
-    accumulate(pairs_[i], st, out[i]);
-  }
 }
 
 std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(const Real* coords,
@@ -881,31 +1029,27 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
   // than m, with a facet within d + 4 m of its present position; m < skin/2
   // with skin = radius - cutoff, and a point farther than the radius stays
   // beyond the cutoff. 2D blends reach (kSmoothingRange + 1) delta farther.
-  // Curved segments: their chords are searched (within the chord deviation
-  // of the curve), and a node moving by m moves the curve by up to 1.25 m
-  // (the largest sum of |N_a| of a Line3).
-  const Real blend = dim_ == 2 ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
+  // Curved facets: their covers are searched (within the cover deviation of
+  // the facets), and a node moving by m moves a facet by up to its Lebesgue
+  // constant times m (lebesgueConstant).
+  bool anyCurved = false;
+  Real lebesgue = 1.0;
+  for (int l = 0; l < nb; ++l)
+    if (curved(l)) anyCurved = true, lebesgue = std::max(lebesgue, lebesgueConstant(dim_, surfaces_[l].nodesPerFacet));
+  const Real blend = dim_ == 2 || anyCurved ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
   std::vector<Real> deviation(nb, 0.0);
+  std::vector<std::vector<Real>> coverPoints(nb);
   Real margin = 0.0;
   for (int l = 0; l < nb; ++l) {
-    if (!curved(l)) continue;
-    const mesh::Surface& sl = surfaces_[l];
-    for (LocalIndex s = 0; s < sl.numFacets(); ++s) {
-      const LocalIndex* n = &sl.facets[3 * std::size_t(s)];
-      deviation[l] = std::max(deviation[l], line3ChordDeviation(coords + 2 * std::size_t(n[0]),
-                                                                coords + 2 * std::size_t(n[1]),
-                                                                coords + 2 * std::size_t(n[2])));
-    }
+    deviation[l] = cover(coords, l, coverPoints[l]);
     margin = std::max(margin, 2.0 * deviation[l]);
   }
-  bool anyCurved = false;
-  for (int l = 0; l < nb; ++l) anyCurved = anyCurved || curved(l);
-  const Real skin = std::max(radius - cutoff_, 0.0) * (anyCurved ? 1.25 : 1.0);
+  const Real skin = std::max(radius - cutoff_, 0.0) * lebesgue;
   const std::vector<char> bodies = bodiesWithin(coords, cutoff_ + skin + blend + margin);
   std::vector<std::unique_ptr<ClosestPointSearch>> search(nb);
   for (int l = 0; l < nb; ++l) {
     search[l] = makeClosestPointSearch(dim_, options_.search);
-    search[l]->build(coords, targets_[l]);
+    search[l]->build(dim_ == 3 && curved(l) ? coverPoints[l].data() : coords, targets_[l]);
   }
   std::vector<std::pair<LocalIndex, LocalIndex>> out;
   std::vector<LocalIndex> near, reach;  // reach: the target nodes the current facet's points can pair with
@@ -917,12 +1061,13 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
       if (!pr.found()) continue;
       near.clear();
       search[l]->facetsNearPoint(x, pr.distance + 2.0 * skin + blend + 2.0 * dev, near);
-      // a curved segment (its chords 2s, 2s + 1) brings its three nodes, and those of its neighbours
+      // a curved facet (the pieces of its cover) brings its nodes, and a curved segment those of its neighbours
       const mesh::Surface& tl = curved(l) ? surfaces_[l] : targets_[l];
+      const int pieces = curved(l) ? coverPieces(l) : 1;
       for (LocalIndex c : near) {
-        const LocalIndex s = curved(l) ? c / 2 : c;
+        const LocalIndex s = c / pieces;
         for (int j = 0; j < tl.nodesPerFacet; ++j) reach.push_back(tl.facets[std::size_t(s) * tl.nodesPerFacet + j]);
-        if (!curved(l)) continue;
+        if (!curved(l) || dim_ == 3) continue;
         for (int end = 0; end < 2; ++end)
           if (const LocalIndex n = neighbours_[l][2 * std::size_t(s) + end]; n >= 0)
             for (int j = 0; j < 3; ++j) reach.push_back(tl.facets[3 * std::size_t(n) + j]);

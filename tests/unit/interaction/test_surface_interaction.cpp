@@ -235,7 +235,7 @@ TEST(SurfaceInteraction, ScatterFormMatchesVectorForm) {
   const auto R = si.summary().resultant;
   std::size_t i = 0;
   Real maxDiff = 0.0;
-  si.evaluate(tb.coords.data(), [&](const PairContribution& p) {
+  si.evaluate(tb.coords.data(), [&](const auto& p) {
     for (int k = 0; k < 4; ++k) maxDiff = std::max(maxDiff, std::abs(p.f[k] - c[i].f[k]));
     ++i;
   });

@@ -54,14 +54,8 @@ struct InteractionSetup {
   /// epsilon (the strength) by gammaW0 / gammaW; gammaL = R0 / r0 at fixed
   /// gammaW scales r0 (the length) by gammaL0 / gammaL with epsilon r0^3 fixed.
   std::vector<ScalarParameter> scalarParameters(std::shared_ptr<Interaction> interaction) const;
-  /// Throws InputError for `order` 2 with Method 3 in 3D, which takes linear cells only there (curved
-  /// 3D facets are not implemented); in 2D and axisymmetry Method 3 projects onto curved segments, and
-  /// Method 1 takes both orders everywhere. `where` says where the order comes from, for the message:
-  /// "body \"sphere\" has HEX27 cells". Called before a mesh is built (Geometry/Element Order) and by checkMesh.
-  void checkElementOrder(int order, Formulation formulation, const std::string& where) const;
-  /// Throws InputError if the method cannot integrate over `mesh`: Method 3 takes
-  /// linear cells only in 3D (checkElementOrder); Method 1 needs the
-  /// whole bodies, not a symmetric part of them.
+  /// Throws InputError if the method cannot integrate over `mesh`: Method 1 needs the
+  /// whole bodies, not a symmetric part of them (both methods take every cell type).
   void checkMesh(const mesh::Mesh& mesh, Formulation formulation) const;
 };
 

@@ -64,28 +64,38 @@ inline Real line3ChordDeviation(const Real* ya, const Real* yb, const Real* ymid
   return std::hypot(ya[0] + yb[0] - 2.0 * ymid[0], ya[1] + yb[1] - 2.0 * ymid[1]) / 8.0;
 }
 
-/// Closest point of the segment y (NS = 2 or 3 nodes, 2 coordinates each) to x:
-/// returns the squared distance; eta in [0, 1] the local coordinate, p the
-/// point, region 0 inside, 1 at end a (eta = 0), 2 at end b (eta = 1).
-template <int NS>
-inline Real projectOntoCurve(const Real x[2], const Real* y, Real& eta, Real p[2], int& region) {
+/// Closest point of the segment y (NS = 2 or 3 nodes, D = 2 or 3 coordinates
+/// each; straight segments in 2D only) to x: returns the squared distance; eta
+/// in [0, 1] the local coordinate, p the point, region 0 inside, 1 at end a
+/// (eta = 0), 2 at end b (eta = 1).
+template <int NS, int D = 2>
+inline Real projectOntoCurve(const Real* x, const Real* y, Real& eta, Real* p, int& region) {
   if constexpr (NS == 2) {
+    static_assert(D == 2, "straight segments are projected in 2D");
     return projectOntoSegment(x, y, y + 2, eta, p, region);
   } else {
     // y(eta) = c0 + c1 eta + c2 eta^2; g(eta) = (y - x) . y' = a0 + a1 eta + a2 eta^2 + a3 eta^3
-    Real c1[2], c2[2], q[2];
-    for (int i = 0; i < 2; ++i) {
-      c1[i] = -3.0 * y[i] - y[2 + i] + 4.0 * y[4 + i];
-      c2[i] = 2.0 * y[i] + 2.0 * y[2 + i] - 4.0 * y[4 + i];
+    Real c1[D], c2[D], q[D];
+    for (int i = 0; i < D; ++i) {
+      c1[i] = -3.0 * y[i] - y[D + i] + 4.0 * y[2 * D + i];
+      c2[i] = 2.0 * y[i] + 2.0 * y[D + i] - 4.0 * y[2 * D + i];
       q[i] = y[i] - x[i];
     }
-    auto dot = [](const Real* u, const Real* v) { return u[0] * v[0] + u[1] * v[1]; };
+    auto dot = [](const Real* u, const Real* v) {
+      Real s = 0.0;
+      for (int i = 0; i < D; ++i) s += u[i] * v[i];
+      return s;
+    };
     const Real a3 = 2.0 * dot(c2, c2), a2 = 3.0 * dot(c1, c2), a1 = dot(c1, c1) + 2.0 * dot(q, c2), a0 = dot(q, c1);
     auto g = [&](Real e) { return a0 + e * (a1 + e * (a2 + e * a3)); };
     auto dg = [&](Real e) { return a1 + e * (2.0 * a2 + e * 3.0 * a3); };
     auto dist2 = [&](Real e) {
-      const Real d0 = q[0] + e * (c1[0] + e * c2[0]), d1 = q[1] + e * (c1[1] + e * c2[1]);
-      return d0 * d0 + d1 * d1;
+      Real s = 0.0;
+      for (int i = 0; i < D; ++i) {
+        const Real d = q[i] + e * (c1[i] + e * c2[i]);
+        s += d * d;
+      }
+      return s;
     };
     // candidates: both ends and every minimum of the distance inside (g from - to +)
     Real best = dist2(0.0);
@@ -128,7 +138,7 @@ inline Real projectOntoCurve(const Real x[2], const Real* y, Real& eta, Real p[2
       }
       if (const Real d = dist2(e); d < best) best = d, eta = e, region = 0;
     }
-    for (int i = 0; i < 2; ++i) p[i] = x[i] + q[i] + eta * (c1[i] + eta * c2[i]);
+    for (int i = 0; i < D; ++i) p[i] = x[i] + q[i] + eta * (c1[i] + eta * c2[i]);
     return best;
   }
 }

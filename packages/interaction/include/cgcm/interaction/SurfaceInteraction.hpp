@@ -59,6 +59,17 @@
 // differs from the curve's by at most the chord deviation of the body
 // (line3ChordDeviation, refreshed at every search); every segment whose
 // chords come that close to the nearest is projected onto exactly.
+//
+// Curved facets (3D, the TRI6, QUAD8 and QUAD9 faces of quadratic cells):
+// the same on curved facets (Method3CurvedKernel3D.hpp): a point lies on its
+// curved facet, the projection is onto the target's curved facet (inside, an
+// edge or a corner), the blend runs over facets (rho = r + o^2/delta, o the
+// offset of x from the facet's normal line at the foot). The search runs
+// over each facet's cover (its nodes' grid split into 4 or 8 flat
+// triangles; the QUAD8 centre evaluated), whose distance from the facet is
+// bounded by coverDeviation; every facet whose cover comes within twice the
+// body's largest bound of the nearest is projected onto exactly. A body's
+// facets are all linear or all curved, and in 3D so are every body's.
 #include <Kokkos_Core.hpp>
 
 #include <array>
@@ -134,6 +145,8 @@ constexpr Real kSmoothingRange = 30.0;
 /// neighbour when the target projects onto their common vertex; in 3D the point's
 /// facet nodes and three per target triangle (shared nodes are merged).
 constexpr int kMaxContributionNodes = 4 + 3 * kMaxBlendTargets3D;
+/// The same on curved 3D facets: the point's facet nodes and up to nine per target facet.
+constexpr int kMaxCurvedContributionNodes = 9 + 9 * kMaxBlendTargets3D;
 
 /// One interaction pair: quadrature point `qp` of segment `facet` of body
 /// `body` and the segments `targets[0 .. numTargets)` of body `otherBody` it
@@ -159,16 +172,23 @@ constexpr int kMaxContributionColumns = 3 * kMaxContributionNodes;
 /// K[dim a + i][dim b + j] = d f[dim a + i] / d x_j(colNodes[b]), b < numColNodes.
 /// colNodes = {rowNodes..., nodes of the targets in order, each once}: in 2D
 /// {rowNodes, target node a, target node b} for one target; in 3D the facet's
-/// nodes, then the target triangle's three.
-struct PairContribution {
+/// nodes, then the target triangle's three. Sized by the most row and column
+/// nodes: PairContribution for segments and flat facets, CurvedPairContribution
+/// (six times larger) for curved 3D facets.
+template <int MaxRowNodes, int MaxColNodes>
+struct BasicPairContribution {
+  static constexpr int kMaxRows = 3 * MaxRowNodes;
+  static constexpr int kMaxColumns = 3 * MaxColNodes;
   int dim = 2;
-  int numRowNodes = 2;  ///< nodes of the point's facet: 2 or 3 (segment), 3 or 4 (3D)
-  LocalIndex rowNodes[4];
+  int numRowNodes = 2;  ///< nodes of the point's facet: 2 or 3 (segment), 3, 4 (flat facet), 6, 8, 9 (curved)
+  LocalIndex rowNodes[MaxRowNodes];
   int numColNodes = 4;
-  LocalIndex colNodes[kMaxContributionNodes];
-  Real f[12];
-  Real K[12][kMaxContributionColumns];
+  LocalIndex colNodes[MaxColNodes];
+  Real f[kMaxRows];
+  Real K[kMaxRows][kMaxColumns];
 };
+using PairContribution = BasicPairContribution<4, kMaxContributionNodes>;
+using CurvedPairContribution = BasicPairContribution<9, kMaxCurvedContributionNodes>;
 
 /// Counts and diagnostics of the last updatePairs / evaluate.
 struct InteractionSummary {
@@ -243,7 +263,8 @@ class SurfaceInteraction final : public Interaction {
   int dim() const { return dim_; }
   /// The facets the closest-point search runs over: the surface itself in 2D
   /// (the chords of curved segments: s -> 2s, 2s + 1), its triangles in 3D
-  /// (quad4 facet f -> triangles 2f, 2f + 1).
+  /// (quad4 facet f -> triangles 2f, 2f + 1; curved facet f -> its cover's
+  /// triangles, whose points are not mesh nodes: cover()).
   const mesh::Surface& targetSurface(int body) const { return targets_[body]; }
   Real density(int body) const { return densities_[body]; }
   /// Absolute cutoff in use (scaled by the length scale).
@@ -275,59 +296,54 @@ class SurfaceInteraction final : public Interaction {
   void updatePairs(const std::vector<Real>& coords) { updatePairs(coords.data()); }
   const std::vector<InteractionPair>& pairs() const { return pairs_; }
 
+  /// Whether the surfaces are curved 3D facets: their contributions are CurvedPairContribution.
+  bool curvedFacets3D() const { return dim_ == 3 && !surfaces_.empty() && curved(0); }
+
   /// Evaluates one pair at `coords` (thread-safe: usable inside a parallel
   /// loop over pairs()): the blend over its targets, or the single target's
   /// contribution. Without tangent K is left untouched. Returns the state of
   /// the target of largest weight; throws NumericalError if r = 0 or the
-  /// result is not finite.
+  /// result is not finite. The contribution type must be the surfaces'
+  /// (curvedFacets3D()), else std::logic_error.
   PairState evaluatePair(const Real* coords, const InteractionPair& pair, PairContribution& out,
+                         bool withTangent = true) const;
+  PairState evaluatePair(const Real* coords, const InteractionPair& pair, CurvedPairContribution& out,
                          bool withTangent = true) const;
 
   /// Evaluates all pairs of the current list at `coords` (which may differ
   /// from the coordinates of updatePairs: the list is kept, each projection
   /// is recomputed on its stored target segment). Fills out (resized to
   /// pairs().size()) and the resultants and counts of summary().
-  void evaluate(const Real* coords, std::vector<PairContribution>& out, bool withTangent = true);
-  void evaluate(const std::vector<Real>& coords, std::vector<PairContribution>& out,
-                bool withTangent = true) {
+  template <class Contribution>
+  void evaluate(const Real* coords, std::vector<Contribution>& out, bool withTangent = true) {
+    out.resize(pairs_.size());
+    beginEvaluation();
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const PairState st = evaluatePair(coords, pairs_[i], out[i], withTangent);
+      accumulate(pairs_[i], st, out[i].f, out[i].numRowNodes * out[i].dim, out[i].dim);
+    }
+  }
+  template <class Contribution>
+  void evaluate(const std::vector<Real>& coords, std::vector<Contribution>& out, bool withTangent = true) {
     evaluate(coords.data(), out, withTangent);
   }
 
-  /// Scatter form: calls scatter(const PairContribution&) for every pair p
-  /// with include(p) (e.g. the pairs this rank owns), inside a
+  /// Scatter form: calls scatter(contribution) for every pair p with
+  /// include(p) (e.g. the pairs this rank owns), inside a
   /// Kokkos::parallel_for over the pairs (scatter must be safe to call
-  /// concurrently where Kokkos runs threads: atomic adds); the summary's
-  /// resultants and counts are those of these pairs.
+  /// concurrently where Kokkos runs threads: atomic adds, and take either
+  /// contribution type); the summary's resultants and counts are those of
+  /// these pairs.
   template <class Scatter, class Include>
   void evaluate(const Real* coords, Scatter&& scatter, bool withTangent, Include&& include) {
-    beginEvaluation();
-    Kokkos::View<Real* [3], Kokkos::HostSpace> resultant("cgcm::surface_resultant", surfaces_.size());
-    Kokkos::View<Real[1], Kokkos::HostSpace> minDistance("cgcm::surface_min_distance");
-    Kokkos::View<LocalIndex[1], Kokkos::HostSpace> vertices("cgcm::surface_vertex_projections");
-    minDistance(0) = summary_.minDistance;
-    Kokkos::parallel_for(
-        "cgcm::method3_pairs", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, pairs_.size()),
-        [&](const std::size_t k) {
-          const InteractionPair& p = pairs_[k];
-          if (!include(p)) return;
-          PairContribution c;
-          const PairState st = evaluatePair(coords, p, c, withTangent);
-          for (int a = 0; a < c.numRowNodes; ++a)
-            for (int i = 0; i < c.dim; ++i) Kokkos::atomic_add(&resultant(p.body, i), -c.f[c.dim * a + i]);
-          Kokkos::atomic_fetch_min(&minDistance(0), st.distance);
-          if (st.region != 0) Kokkos::atomic_add(&vertices(0), LocalIndex(1));
-          scatter(static_cast<const PairContribution&>(c));
-        });
-    Kokkos::fence();
-    for (std::size_t b = 0; b < surfaces_.size(); ++b)
-      for (int i = 0; i < 3; ++i) summary_.resultant[b][i] = resultant(b, i);
-    summary_.minDistance = minDistance(0);
-    summary_.numVertexProjections = vertices(0);
+    if (curvedFacets3D()) evaluateWith<CurvedPairContribution>(coords, scatter, withTangent, include);
+    else evaluateWith<PairContribution>(coords, scatter, withTangent, include);
   }
   template <class Scatter>
   void evaluate(const Real* coords, Scatter&& scatter, bool withTangent = true) {
     evaluate(coords, scatter, withTangent, [](const InteractionPair&) { return true; });
   }
+
 
   /// Sorted, unique (row node, column node) couplings of every pair that can
   /// occur while the nodes move by less than (radius - cutoff)/2: for each
@@ -360,23 +376,58 @@ class SurfaceInteraction final : public Interaction {
   Real lengthScale() const override { return lengthScale_; }
 
  private:
+  template <class Contribution, class Scatter, class Include>
+  void evaluateWith(const Real* coords, Scatter& scatter, bool withTangent, Include& include) {
+    beginEvaluation();
+    Kokkos::View<Real* [3], Kokkos::HostSpace> resultant("cgcm::surface_resultant", surfaces_.size());
+    Kokkos::View<Real[1], Kokkos::HostSpace> minDistance("cgcm::surface_min_distance");
+    Kokkos::View<LocalIndex[1], Kokkos::HostSpace> vertices("cgcm::surface_vertex_projections");
+    minDistance(0) = summary_.minDistance;
+    Kokkos::parallel_for(
+        "cgcm::method3_pairs", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, pairs_.size()),
+        [&](const std::size_t k) {
+          const InteractionPair& p = pairs_[k];
+          if (!include(p)) return;
+          Contribution c;
+          const PairState st = evaluatePair(coords, p, c, withTangent);
+          for (int a = 0; a < c.numRowNodes; ++a)
+            for (int i = 0; i < c.dim; ++i) Kokkos::atomic_add(&resultant(p.body, i), -c.f[c.dim * a + i]);
+          Kokkos::atomic_fetch_min(&minDistance(0), st.distance);
+          if (st.region != 0) Kokkos::atomic_add(&vertices(0), LocalIndex(1));
+          scatter(static_cast<const Contribution&>(c));
+        });
+    Kokkos::fence();
+    for (std::size_t b = 0; b < surfaces_.size(); ++b)
+      for (int i = 0; i < 3; ++i) summary_.resultant[b][i] = resultant(b, i);
+    summary_.minDistance = minDistance(0);
+    summary_.numVertexProjections = vertices(0);
+  }
   void beginEvaluation();
-  void accumulate(const InteractionPair& p, const PairState& st, const PairContribution& c);
+  /// Adds pair p's f (rows entries, dim per node) to the resultants, its state to the counts.
+  void accumulate(const InteractionPair& p, const PairState& st, const Real* f, int rows, int dim);
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);
-  /// 2D segments of body l have 3 nodes (curved).
-  bool curved(int l) const { return dim_ == 2 && surfaces_[l].nodesPerFacet == 3; }
-  /// The curved segments of body l whose chords come within `radius` of x (sorted, unique).
-  void curvedSegmentsNear(const Real x[2], int l, Real radius, std::vector<LocalIndex>& out);
+  /// The facets of body l are curved: Line3 segments (2D), TRI6, QUAD8, QUAD9 (3D).
+  bool curved(int l) const { return dim_ == 2 ? surfaces_[l].nodesPerFacet == 3 : surfaces_[l].nodesPerFacet > 4; }
+  /// Pieces of the search cover per curved facet of body l: 2 chords (2D), 4 or 8 triangles (3D).
+  int coverPieces(int l) const;
+  /// The search cover of body l at coords: the points of the 3D cover into `points` (3 per point),
+  /// and the largest distance of a curved facet from its cover (0 for a body of flat facets).
+  Real cover(const Real* coords, int l, std::vector<Real>& points) const;
+  /// The curved facets of body l whose cover comes within `radius` of x (sorted, unique).
+  void curvedFacetsNear(const Real* x, int l, Real radius, std::vector<LocalIndex>& out);
   /// The blend distance rho (r without smoothing or withPenalty = false) of the
-  /// projection of x onto segment s of body l, the distance r into *r (may be null).
-  Real curvedBlendDistance(const Real* coords, const Real x[2], int l, LocalIndex s, Real* r,
+  /// projection of x onto curved facet s of body l, the distance r into *r (may be null).
+  Real curvedBlendDistance(const Real* coords, const Real* x, int l, LocalIndex s, Real* r,
                            bool withPenalty = true) const;
-  /// The closest curved segment of body l to x within the cutoff: (distance, segment), or segment -1.
-  std::pair<Real, LocalIndex> closestCurvedSegment(const Real* coords, const Real x[2], int l, const Projection& chord);
-  void findCurvedTargets(const Real* coords, const Real x[2], int l, InteractionPair& p);
+  /// The closest curved facet of body l to x within the cutoff: (distance, facet), or facet -1.
+  std::pair<Real, LocalIndex> closestCurvedFacet(const Real* coords, const Real* x, int l, const Projection& cover);
+  void findCurvedTargets(const Real* coords, const Real* x, int l, InteractionPair& p);
   template <class P>
   PairState evaluateCurvedPair(const P& potential, const Real* coords, const InteractionPair& p,
                                PairContribution& out, bool withTangent) const;
+  template <class P>
+  PairState evaluateCurvedPair3D(const P& potential, const Real* coords, const InteractionPair& p,
+                                 CurvedPairContribution& out, bool withTangent) const;
   void findTargets3D(const Real* coords, const Real x[3], int l, LocalIndex closest, InteractionPair& p);
   void keepBlendTargets(Real limit, int maxTargets, InteractionPair& p);
   template <class P>
@@ -406,7 +457,8 @@ class SurfaceInteraction final : public Interaction {
                      LocalIndex* far) const;
 
   std::vector<mesh::Surface> surfaces_;
-  std::vector<mesh::Surface> targets_;                ///< searched facets (3D: triangles)
+  std::vector<mesh::Surface> targets_;                ///< searched facets (3D: triangles; curved: the cover)
+  std::vector<std::vector<Real>> coverPoints_;        ///< [body]: the 3D cover's points (last search)
   std::vector<std::vector<FacetPoint>> facetRules_;   ///< 3D: quadrature per body's facet kind
   int dim_ = 2;
   std::vector<Real> densities_;
@@ -428,7 +480,7 @@ class SurfaceInteraction final : public Interaction {
   std::vector<LocalIndex> hints_;        ///< [point * numBodies + other body]: last projection's facet, or -1
   std::vector<Real> referenceAreas_;     ///< [point]: dA (setReferenceConfiguration), empty until set
   std::vector<std::vector<LocalIndex>> neighbours_;  ///< [body][2 s + end]: segment sharing that node, or -1
-  std::vector<Real> chordDeviation_;  ///< [body]: largest distance of a curved segment from its chords (last search)
+  std::vector<Real> coverDeviation_;  ///< [body]: largest distance of a curved facet from its cover (last search)
   std::vector<InteractionPair> pairs_;
   std::vector<std::vector<char>> evaluatedFacets_;  ///< [body][facet], empty: all (setEvaluatedFacets)
   std::vector<LocalIndex> near_;                        ///< scratch of findTargets
