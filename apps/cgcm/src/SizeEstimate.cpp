@@ -68,7 +68,7 @@ std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& de
   }
   if (formulation == Formulation::ThreeD && type == "sphere on half-space") {  // the swept quarter model
     const int level = g.get<int>("Mesh Refinement");
-    const mesh::MeshSize size = mesh::sphereOnHalfSpaceQuarterSize(level, g.get<int>("Azimuthal Cells") << level);
+    const mesh::MeshSize size = mesh::sphereOnHalfSpaceQuarterSize(level, mesh::cellsAtLevel(g.get<int>("Azimuthal Cells"), level));
     return estimateSize(size.nodes, size.cells, formulation);
   }
   const double grow = std::pow(4.0, g.get<int>("Mesh Refinement"));

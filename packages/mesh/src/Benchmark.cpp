@@ -48,7 +48,7 @@ LocalIndex addNode(Mesh& m, Real x, Real y) {
   return m.numNodes() - 1;
 }
 
-int scaled(int n, int level) { return n << level; }
+int scaled(int n, int level) { return cellsAtLevel(n, level); }
 
 }  // namespace
 
@@ -106,7 +106,8 @@ std::vector<Real> fineThenGeometric(Real length, Real fineLength, int fineCells,
 
 Mesh quarterDisk(const QuarterDiskSpec& s, MeridianRows* rows) {
   if (!(s.radius > 0.0)) throw InputError("sphere radius must be > 0");
-  if (s.refinement < 0 || s.refinement > 6) throw InputError("Geometry/Mesh Refinement must be 0 .. 6");
+  if (s.refinement < kCoarsestLevel || s.refinement > kFinestLevel)
+    throw InputError("Geometry/Mesh Refinement must be -1 .. 6");
   if (!(s.fineAngle > 0.0 && s.fineAngle < 0.7)) throw InputError("quarter disk: fine angle must be in (0, 0.7)");
   const int L = s.refinement;
   // Polar angle from the apex: patch B spans [0, pi/4], patch C [pi/4, pi/2].
@@ -209,7 +210,8 @@ Mesh quarterDisk(const QuarterDiskSpec& s, MeridianRows* rows) {
 
 Mesh halfSpaceBlock(const HalfSpaceSpec& s, MeridianRows* rows) {
   if (!(s.width > s.fineLength) || !(s.depth > 0.0)) throw InputError("half-space block: invalid size");
-  if (s.refinement < 0 || s.refinement > 6) throw InputError("Geometry/Mesh Refinement must be 0 .. 6");
+  if (s.refinement < kCoarsestLevel || s.refinement > kFinestLevel)
+    throw InputError("Geometry/Mesh Refinement must be -1 .. 6");
   const int L = s.refinement;
   const std::vector<Real> xs = fineThenGeometric(s.width, s.fineLength, scaled(20, L), scaled(10, L));
   const std::vector<Real> ds = geometric(s.depth, s.fineLength / scaled(20, L), scaled(20, L));

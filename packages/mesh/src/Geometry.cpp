@@ -167,8 +167,10 @@ Teuchos::RCP<const ParameterList> validParameters() {
                  atLeast(1e-300));
     g->set("Half-Space Size", 8.0, "width and depth of the half-space block, in sphere radii (>= 2)",
                  atLeast(2.0));
-    g->set("Mesh Refinement", 0, "level 0 (about 1400 nodes) .. 6; each level halves every cell",
-                 intBetween(0, 6));
+    g->set("Mesh Refinement", 0,
+                 "level 0 (about 1400 nodes) .. 6; each level halves every cell. -1 doubles those of level 0: "
+                 "with Element Order = 2 it has the nodes of the linear level 0",
+                 intBetween(mesh::kCoarsestLevel, mesh::kFinestLevel));
     g->set("Contact Zone Size", 0.5,
                  "radial extent of the finest cells around the axis, in sphere radii (0.02 .. 0.85): 20 cells on "
                  "the half-space and 16 on the sphere at level 0. Smaller zones resolve smaller contacts (large "
@@ -297,7 +299,12 @@ void buildSphereOnHalfSpaceQuarter(const ParameterList& g, const ContactDistance
         "Geometry/Azimuthal Cells = " + std::to_string(cells) +
         " is odd; the quarter's core has half of them on each of its two outer sides: give an even number");
   const Real zone = g.get<double>("Contact Zone Size");
-  const int largest = mesh::largestQuarterCells(sphereSpec(g, 1.0), halfSpaceSpec(g)) >> level;
+  if (mesh::cellsAtLevel(cells, level) % 2 != 0)
+    throw InputError("Geometry/Azimuthal Cells = " + std::to_string(cells) + " at Mesh Refinement " +
+                     std::to_string(level) + " gives " + std::to_string(mesh::cellsAtLevel(cells, level)) +
+                     " cells, odd; the quarter's core has half of them on each of its two outer sides: give a "
+                     "multiple of 4");
+  const int largest = mesh::cellsAtLevel(mesh::largestQuarterCells(sphereSpec(g, 1.0), halfSpaceSpec(g)), -level);
   if (cells > largest) {
     std::ostringstream zoneText;
     zoneText << zone;
@@ -310,7 +317,7 @@ void buildSphereOnHalfSpaceQuarter(const ParameterList& g, const ContactDistance
   const Real R0 = g.get<double>("Sphere Radius");
   const Real rS0 = contactDistance();  // u = 0: undeformed surfaces r_S0 apart
   s.mesh =
-      std::make_shared<Mesh>(mesh::sphereOnHalfSpaceQuarter(sphereSpec(g, R0 + rS0), halfSpaceSpec(g), cells << level));
+      std::make_shared<Mesh>(mesh::sphereOnHalfSpaceQuarter(sphereSpec(g, R0 + rS0), halfSpaceSpec(g), mesh::cellsAtLevel(cells, level)));
   s.interacting = true;
   s.areaFactors = {R0, R0};
   s.conditions = {{"driven", 2, 0.0, -1.0}};

@@ -20,11 +20,18 @@ std::vector<Real> fineThenGeometric(Real length, Real fineLength, int fineCells,
 /// `first`, where `cells` cells of `first` would already pass `length`.
 std::vector<Real> geometric(Real length, Real first, int cells);
 
+/// The built-in meshes' levels: Geometry/Mesh Refinement -1 .. 6. Level -1 doubles every cell of
+/// level 0: with quadratic cells it has the nodes of the linear level 0.
+inline constexpr int kCoarsestLevel = -1, kFinestLevel = 6;
+
+/// n cells at level 0 at `level` (doubled per level; halved at level -1, rounded down).
+inline int cellsAtLevel(int n, int level) { return level >= 0 ? n << level : n >> -level; }
+
 struct QuarterDiskSpec {
   Real radius = 1.0;
   Real centerY = 0.0;     ///< centre on the axis x = 0
   bool lowerHalf = true;  ///< true: the quarter below the centre (apex pointing down)
-  int refinement = 0;     ///< each level halves every cell
+  int refinement = 0;     ///< each level halves every cell (kCoarsestLevel .. kFinestLevel)
   Real fineAngle = 0.4;   ///< polar angle from the apex over which cells are finest (16 cells at level 0,
                           ///< also the thickness of the first layer under the surface)
   int body = 0;
