@@ -110,8 +110,11 @@ void measureCost(RunResult& result, const solver::Discretization& disc, const so
   if (const auto* volume = problem->volumeInteraction()) {
     const auto& vs = volume->summary();
     // each rank lists the pairs of its own cells: sums over the ranks
-    LocalIndex numPairs = 0, atMax = 0;
+    LocalIndex numPairs = 0, atMax = 0, above = 0;
     int maxOrder = 0;
+    Real maxEstimate = 0.0;
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numAboveTolerance, Teuchos::outArg(above));
+    Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_MAX, vs.maxErrorEstimate, Teuchos::outArg(maxEstimate));
     Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_MAX, vs.maxOrderUsed, Teuchos::outArg(maxOrder));
     Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numPairs, Teuchos::outArg(numPairs));
     Teuchos::reduceAll(*disc.dofs->comm(), Teuchos::REDUCE_SUM, vs.numAtMaxOrder, Teuchos::outArg(atMax));
@@ -123,8 +126,10 @@ void measureCost(RunResult& result, const solver::Discretization& disc, const so
     std::ostringstream o;
     o << "volume pairs (Method 1): " << numPairs << " directed cell pairs within cutoff + skin = "
       << vs.cutoff + vs.skin << ", " << pointPairs << " quadrature-point pairs per evaluation, quadrature orders up to "
-      << maxOrder << " (" << atMax << " pairs at the maximum " << volume->maxQuadratureOrder()
-      << "), " << vs.numListBuilds << " pair lists built; kernel " << kernelSeconds << " s for " << totalPairs
+      << maxOrder << " (" << atMax << " pairs at the maximum " << volume->maxQuadratureOrder() << ", " << above
+      << " above the tolerance " << volume->options().quadratureTolerance << "; estimated pair error up to "
+      << maxEstimate << " of a pair's force), " << vs.numListBuilds << " pair lists built; kernel "
+      << kernelSeconds << " s for " << totalPairs
       << " point pairs (" << 1e-6 * double(totalPairs) / std::max(kernelSeconds, 1e-300) << " M/s)";
     result.volumePairs = o.str();
   }

@@ -31,15 +31,23 @@ Teuchos::RCP<const ParameterList> validParameters() {
                "with the cells within the cutoff, and cells near the surfaces should be about r0 or smaller)",
                choices({"half-space point", "volume pair"}));
     inter->set("Volume Quadrature Order", 2,
-               "volume pair: Gauss points per direction of a cell for pairs of cells far apart (1 .. 6); closer "
-               "pairs get more, up to the Max Volume Quadrature Order",
+               "volume pair: the fewest Gauss points per direction of a cell (1 .. 6); pairs of cells closer "
+               "than their size get more, as Volume Quadrature Tolerance asks, up to the Max Volume Quadrature Order",
                intBetween(1, 6));
     inter->set("Max Volume Quadrature Order", 0,
                "volume pair: most Gauss points per direction for pairs of cells close to each other (1 .. 12 in "
                "2D, 1 .. 6 in 3D; 4 for pairs with a tetrahedron); 0: the most the kernel holds (12 in 2D and "
-               "axisymmetry, 6 in 3D). A lower cap leaves close pairs under-integrated (the run's summary counts "
-               "the pairs at the cap)",
+               "axisymmetry, 6 in 3D). A mesh whose cells in contact need more to meet the Volume Quadrature "
+               "Tolerance is refused; the run's summary counts the pairs at the cap and those above the tolerance",
                intBetween(0, 12));
+    inter->set("Volume Quadrature Tolerance", 1e-4,
+               "volume pair: each pair of cells gets the lowest Gauss order (from Volume Quadrature Order up) whose "
+               "estimated error of the pair's force, relative to the larger of its repulsive and attractive parts, is "
+               "at most this at the closest the cells come before the pair list is rebuilt (in contact: r0 / 2). A "
+               "mesh whose surface cells where the bodies meet need more than the Max Volume Quadrature Order there "
+               "is refused before the run, with the cell size it needs. 0: no estimate, every pair takes Volume "
+               "Quadrature Order (for checks of other things than accuracy)",
+               between(0.0, 1.0));
     inter->set("Pair List Skin", 1.0,
                "volume pair: the pair list covers cutoff + skin (units of r0) and is rebuilt when a node has moved "
                "by half the skin",
@@ -174,6 +182,7 @@ InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& 
   volume.formulation = formulation;
   volume.quadratureOrder = in.get<int>("Volume Quadrature Order");
   volume.maxQuadratureOrder = in.get<int>("Max Volume Quadrature Order");
+  volume.quadratureTolerance = in.get<double>("Volume Quadrature Tolerance");
   volume.cutoff = surface.cutoff;
   volume.skin = in.get<double>("Pair List Skin") * phys.r0;
   if (s.method == Method::VolumePair && volume.maxQuadratureOrder > 0 &&
@@ -222,12 +231,40 @@ void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation
     if (mesh.nodeSets.count(set)) planes.push_back(set);
   if (formulation == Formulation::PlaneStrain && mesh.nodeSets.count("axis"))
     planes.push_back("axis (a symmetry line in plane strain)");
-  if (planes.empty()) return;
-  std::string list;
-  for (const auto& p : planes) list += (list.empty() ? "\"" : ", \"") + p + "\"";
-  throw InputError("Interaction/Method = \"volume pair\" integrates over the whole bodies, but the mesh is a "
-                   "symmetric part of them (" + list + "): mirror it (Geometry/Mirror Planes) or use "
-                   "\"half-space point\"");
+  if (!planes.empty()) {
+    std::string list;
+    for (const auto& p : planes) list += (list.empty() ? "\"" : ", \"") + p + "\"";
+    throw InputError("Interaction/Method = \"volume pair\" integrates over the whole bodies, but the mesh is a "
+                     "symmetric part of them (" + list + "): mirror it (Geometry/Mirror Planes) or use "
+                     "\"half-space point\"");
+  }
+  // The cells that meet first must be integrated to the tolerance when they are in contact
+  // (at kContactGapFloor r0): the rule's error grows with cell size over gap, and beyond about
+  // 4 no order up to the kernel's most brings it down (doc/theory.md#method-1).
+  if (volumeOptions.quadratureTolerance <= 0.0) return;
+  const VolumeInteraction volume(mesh, std::vector<Real>(std::size_t(mesh.numBodies), density), potential,
+                                 volumeOptions);
+  std::vector<char> surfaceCells(std::size_t(mesh.numCells()), 0);
+  for (const auto& surface : mesh.surfaces)
+    for (LocalIndex cell : surface.facetCells)
+      if (cell >= 0) surfaceCells[cell] = 1;
+  const auto c = volume.contactQuadrature(mesh.coords.data(), surfaceCells);
+  if (c.withinTolerance) return;
+  const Real r0 = potential->r0();
+  std::ostringstream o;
+  o.precision(3);
+  o << "Interaction/Method = \"volume pair\": the surface cells where the bodies meet are up to " << c.largestSize / r0
+    << " r0 long (the longest edge; half of it on a tetrahedron), and in contact (" << kContactGapFloor
+    << " r0 apart) their pair quadrature at order " << c.order << ", the most "
+    << (volumeOptions.maxQuadratureOrder > 0 ? "Interaction/Max Volume Quadrature Order" : "the kernel") << " gives"
+    << (c.maxOrder == kMaxTetOrder ? " with a tetrahedron" : "") << ", has an estimated error of " << c.estimate
+    << " of the pairs' force, above Interaction/Volume Quadrature Tolerance = " << volumeOptions.quadratureTolerance
+    << ". Cells of at most " << c.neededSize / r0 << " r0 there meet it (" << c.largestSize / c.neededSize
+    << " times smaller): on the built-in meshes Geometry/Contact Zone Size sets them (cells of Contact Zone Size / 20 "
+       "sphere radii at Mesh Refinement 0: scale it by "
+    << c.neededSize / c.largestSize << ") and each level of Geometry/Mesh Refinement halves them ("
+    << int(std::ceil(std::log2(c.largestSize / c.neededSize))) << " more); or allow a larger tolerance";
+  throw InputError(o.str());
 }
 
 std::vector<std::string> describe(const InteractionSetup& s, const ReferenceScales& scales) {

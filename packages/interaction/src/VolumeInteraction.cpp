@@ -57,6 +57,86 @@ CellBound cellBound(CellType type) {
   }
 }
 
+// The measured relative error of the Gauss rule on the r^-12 and r^-6 parts of a pair's force
+// (tools/volume_quadrature_error.py: two facing squares, 2D plane-strain law, or cubes of edge h
+// at gap g), per order n (rows) and h/g = 0.25 sqrt(2)^k, k = 0 .. 12 (columns), as the envelope
+// of the measurements: at each (n, h/g) the largest error at that order or above and that h/g
+// or below, rounded up to three digits. Beyond h/g = 4 the error of the r^-12 part no longer falls with n up to 12 (the rule
+// does not resolve the peak of width g across cells of 4 g and more: 9e-4 .. 0.3 at n = 12).
+constexpr int kTauColumns = 13;
+constexpr Real kTauFirst = 0.25, kTauLast = 16.0;
+// 2D, r^-12, orders 1 .. 12
+constexpr Real kError2D12[12][kTauColumns] = {
+    {3.82e-01, 5.62e-01, 7.42e-01, 8.80e-01, 9.58e-01, 9.89e-01, 9.98e-01, 1.00e+00, 1.00e+00, 1.00e+00, 1.00e+00, 1.00e+00, 1.00e+00},
+    {2.43e-02, 6.75e-02, 1.63e-01, 3.29e-01, 5.46e-01, 7.53e-01, 8.97e-01, 9.68e-01, 9.93e-01, 9.99e-01, 1.00e+00, 1.00e+00, 1.00e+00},
+    {6.03e-04, 3.05e-03, 1.32e-02, 4.72e-02, 1.36e-01, 3.03e-01, 5.29e-01, 7.43e-01, 8.92e-01, 9.67e-01, 9.93e-01, 9.99e-01, 1.00e+00},
+    {1.04e-05, 9.39e-05, 7.11e-04, 4.32e-03, 2.04e-02, 7.33e-02, 1.96e-01, 3.91e-01, 6.16e-01, 8.10e-01, 9.31e-01, 9.82e-01, 9.97e-01},
+    {1.34e-07, 2.19e-06, 2.90e-05, 3.00e-04, 2.35e-03, 1.34e-02, 5.31e-02, 1.49e-01, 3.10e-01, 5.28e-01, 7.49e-01, 9.03e-01, 9.74e-01},
+    {1.43e-09, 4.21e-08, 9.78e-07, 1.72e-05, 2.21e-04, 2.01e-03, 1.20e-02, 4.47e-02, 1.17e-01, 2.54e-01, 4.75e-01, 7.20e-01, 8.93e-01},
+    {1.32e-11, 7.02e-10, 2.87e-08, 8.60e-07, 1.82e-05, 2.59e-04, 2.32e-03, 1.13e-02, 3.13e-02, 7.74e-02, 2.11e-01, 4.57e-01, 7.24e-01},
+    {1.09e-13, 1.05e-11, 7.51e-10, 3.85e-08, 1.35e-06, 3.02e-05, 4.00e-04, 2.38e-03, 3.36e-03, 2.94e-02, 1.05e-01, 2.36e-01, 4.79e-01},
+    {1.12e-15, 1.40e-13, 1.80e-11, 1.58e-09, 9.07e-08, 3.25e-06, 6.30e-05, 3.70e-04, 2.83e-03, 2.94e-02, 1.05e-01, 2.36e-01, 3.42e-01},
+    {1.12e-15, 1.89e-15, 4.00e-13, 6.03e-11, 5.73e-09, 3.24e-07, 9.24e-06, 1.74e-05, 2.82e-03, 2.94e-02, 1.05e-01, 2.36e-01, 3.42e-01},
+    {1.12e-15, 1.34e-15, 9.33e-15, 2.16e-12, 3.41e-10, 3.05e-08, 1.26e-06, 1.74e-05, 1.76e-03, 2.25e-02, 1.03e-01, 2.36e-01, 3.42e-01},
+    {1.12e-15, 1.34e-15, 1.34e-15, 7.19e-14, 1.92e-11, 2.75e-09, 1.56e-07, 1.03e-05, 9.31e-04, 1.52e-02, 8.70e-02, 2.36e-01, 3.42e-01}};
+// 2D, r^-6, orders 1 .. 12
+constexpr Real kError2D6[12][kTauColumns] = {
+    {1.12e-01, 1.86e-01, 2.88e-01, 4.17e-01, 5.59e-01, 6.95e-01, 8.08e-01, 8.91e-01, 9.44e-01, 9.74e-01, 9.89e-01, 9.95e-01, 9.98e-01},
+    {2.50e-03, 7.46e-03, 2.04e-02, 4.99e-02, 1.08e-01, 2.03e-01, 3.34e-01, 4.88e-01, 6.44e-01, 7.78e-01, 8.75e-01, 9.37e-01, 9.71e-01},
+    {2.25e-05, 1.19e-04, 5.61e-04, 2.35e-03, 8.56e-03, 2.69e-02, 6.99e-02, 1.50e-01, 2.70e-01, 4.23e-01, 5.89e-01, 7.40e-01, 8.53e-01},
+    {1.79e-07, 1.68e-06, 1.36e-05, 9.37e-05, 5.41e-04, 2.60e-03, 1.01e-02, 3.06e-02, 7.33e-02, 1.50e-01, 2.72e-01, 4.37e-01, 6.15e-01},
+    {1.09e-09, 1.81e-08, 2.56e-07, 3.05e-06, 3.00e-05, 2.30e-04, 1.27e-03, 4.73e-03, 1.20e-02, 2.58e-02, 6.34e-02, 1.57e-01, 3.18e-01},
+    {6.18e-12, 1.84e-10, 4.47e-09, 8.80e-08, 1.40e-06, 1.77e-05, 1.48e-04, 5.64e-04, 1.37e-03, 1.26e-02, 4.83e-02, 1.19e-01, 2.28e-01},
+    {3.05e-14, 1.66e-12, 7.14e-11, 2.46e-09, 6.40e-08, 1.22e-06, 1.48e-05, 2.45e-05, 1.37e-03, 1.26e-02, 4.83e-02, 1.19e-01, 2.28e-01},
+    {1.00e-15, 1.44e-14, 1.07e-12, 6.19e-11, 2.77e-09, 8.52e-08, 1.29e-06, 1.55e-05, 7.95e-04, 8.73e-03, 4.29e-02, 1.19e-01, 2.28e-01},
+    {1.00e-15, 1.12e-15, 1.43e-14, 1.55e-12, 1.10e-10, 5.59e-09, 1.06e-07, 7.37e-06, 3.62e-04, 5.07e-03, 3.13e-02, 1.07e-01, 2.28e-01},
+    {1.00e-15, 1.12e-15, 1.12e-15, 3.72e-14, 4.50e-12, 3.35e-10, 6.26e-09, 2.33e-06, 1.49e-04, 2.73e-03, 2.10e-02, 8.55e-02, 2.17e-01},
+    {1.00e-15, 1.12e-15, 1.12e-15, 1.12e-15, 1.73e-13, 2.14e-11, 1.82e-10, 6.52e-07, 5.83e-05, 1.42e-03, 1.35e-02, 6.49e-02, 1.90e-01},
+    {1.00e-15, 1.00e-15, 1.00e-15, 1.00e-15, 4.67e-15, 1.31e-12, 1.20e-10, 1.75e-07, 2.23e-05, 7.19e-04, 8.46e-03, 4.77e-02, 1.59e-01}};
+// 3D, r^-12, orders 1 .. 6
+constexpr Real kError3D12[6][kTauColumns] = {
+    {3.99e-01, 5.79e-01, 7.53e-01, 8.84e-01, 9.58e-01, 9.89e-01, 9.98e-01, 1.00e+00, 1.00e+00, 1.00e+00, 1.00e+00, 1.00e+00, 1.00e+00},
+    {3.12e-02, 8.37e-02, 1.93e-01, 3.68e-01, 5.79e-01, 7.69e-01, 8.99e-01, 9.66e-01, 9.92e-01, 9.99e-01, 1.00e+00, 1.00e+00, 1.00e+00},
+    {8.41e-04, 4.06e-03, 1.65e-02, 5.51e-02, 1.49e-01, 3.19e-01, 5.33e-01, 7.30e-01, 8.74e-01, 9.56e-01, 9.89e-01, 9.98e-01, 1.00e+00},
+    {1.59e-05, 1.36e-04, 9.50e-04, 5.28e-03, 2.31e-02, 7.77e-02, 1.96e-01, 3.67e-01, 5.61e-01, 7.50e-01, 8.95e-01, 9.69e-01, 9.94e-01},
+    {2.21e-07, 3.36e-06, 4.06e-05, 3.81e-04, 2.74e-03, 1.45e-02, 5.24e-02, 1.29e-01, 2.37e-01, 3.98e-01, 6.21e-01, 8.27e-01, 9.46e-01},
+    {2.53e-09, 6.84e-08, 1.43e-06, 2.24e-05, 2.63e-04, 2.22e-03, 1.19e-02, 3.40e-02, 5.39e-02, 8.77e-02, 2.31e-01, 5.05e-01, 7.75e-01}};
+// 3D, r^-6, orders 1 .. 6
+constexpr Real kError3D6[6][kTauColumns] = {
+    {1.26e-01, 2.05e-01, 3.13e-01, 4.43e-01, 5.81e-01, 7.10e-01, 8.17e-01, 8.95e-01, 9.45e-01, 9.74e-01, 9.89e-01, 9.95e-01, 9.98e-01},
+    {4.15e-03, 1.21e-02, 3.16e-02, 7.25e-02, 1.45e-01, 2.49e-01, 3.78e-01, 5.18e-01, 6.56e-01, 7.77e-01, 8.70e-01, 9.32e-01, 9.68e-01},
+    {4.19e-05, 2.11e-04, 9.34e-04, 3.59e-03, 1.21e-02, 3.47e-02, 8.22e-02, 1.59e-01, 2.59e-01, 3.83e-01, 5.30e-01, 6.81e-01, 8.09e-01},
+    {3.89e-07, 3.44e-06, 2.57e-05, 1.59e-04, 8.01e-04, 3.36e-03, 1.14e-02, 2.83e-02, 5.13e-02, 8.01e-02, 1.70e-01, 3.34e-01, 4.47e-01},
+    {2.61e-09, 4.03e-08, 5.14e-07, 5.43e-06, 4.72e-05, 3.16e-04, 1.40e-03, 2.87e-03, 8.43e-03, 5.34e-02, 1.70e-01, 3.34e-01, 4.33e-01},
+    {1.64e-11, 4.43e-10, 9.50e-09, 1.61e-07, 2.21e-06, 2.48e-05, 1.64e-04, 1.64e-04, 8.43e-03, 5.34e-02, 1.70e-01, 3.34e-01, 4.33e-01}};
+
+// log-log interpolation between the measured columns (h/g a factor sqrt 2 apart)
+Real tableError(const Real (*rows)[kTauColumns], int order, Real tau) {
+  if (tau > kTauLast) return 1.0;
+  const Real k = std::max(0.0, 2.0 * std::log2(tau / kTauFirst));
+  const int j = std::min(int(k), kTauColumns - 2);
+  const Real t = std::min(1.0, k - j);
+  const Real* row = rows[order - 1];
+  return std::exp((1.0 - t) * std::log(row[j]) + t * std::log(row[j + 1]));
+}
+
+}  // namespace
+
+Real volumeQuadratureError(int dim, int order, Real size, Real gap, Real r0) {
+  const int rows = dim == 2 ? kMaxVolumeOrder2D : kMaxVolumeOrder3D;
+  if (order < 1 || order > rows || !(gap > 0.0)) return 1.0e300;
+  const Real tau = size / gap, x = r0 / gap;
+  const Real e12 = dim == 2 ? tableError(kError2D12, order, tau) : tableError(kError3D12, order, tau);
+  const Real e6 = dim == 2 ? tableError(kError2D6, order, tau) : tableError(kError3D6, order, tau);
+  // error <= E12 |F12| + E6 |F6|; over the larger part, |F6| counts at most 1 and |F12| at most
+  // (r0/g)^6 (no point pair of the cells is closer than g, and the ratio of the parts' point
+  // forces is (r0/r)^6 in 3D, 0.72 (r0/r)^6 for the line laws of plane strain)
+  const Real q = std::pow(x, 6);
+  return e12 * std::min(1.0, q) + e6;
+}
+
+namespace {
+
 std::string cellTypesTaken(int dim) {
   std::string out;
   for (const CellTypeInfo& row : kCellTypes)
@@ -86,6 +166,9 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
     throw InputError(where() + "quadrature orders must satisfy 1 <= order (" +
                      std::to_string(options_.quadratureOrder) + ") <= maximum order (" + std::to_string(maxOrder_) +
                      ") <= " + std::to_string(kernelMax) + " in " + std::to_string(dim_) + "D");
+  if (!(options_.quadratureTolerance >= 0.0) || !std::isfinite(options_.quadratureTolerance))
+    throw InputError(where() + "the quadrature tolerance must be finite and >= 0, got " +
+                     std::to_string(options_.quadratureTolerance));
   if (std::isnan(options_.cutoff) || std::isnan(options_.skin) || std::isinf(options_.skin))
     throw InputError(where() + "cutoff and skin must be numbers (the skin finite)");
   cutoff1_ = options_.cutoff > 0.0 ? options_.cutoff : 10.0 * potential_->r0();
@@ -151,7 +234,10 @@ void VolumeInteraction::setLengthScale(Real b) {
 std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Real* coords, Real radius) const {
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, LocalIndex>;
   // per body: each cell's current bounding box (holding the curved cell), grown by radius / 2 on
-  // every side; its size: the diagonal of its nodes' box (the cell's diameter)
+  // every side; its size for the error estimate (volumeQuadratureError): the longest edge
+  // between corners (the tensor rule resolves each parametric direction along its edges), on a
+  // tetrahedron half of it (its sub-hexahedra's edges run from a vertex to an edge midpoint, from
+  // there to a face centroid, and on to the centroid: at most half the longest edge)
   std::vector<std::vector<Box>> boxes(numBodies_);
   std::vector<std::array<Real, 6>> bounds(view_.cellBody.extent(0));
   std::vector<Real> sizes(view_.cellBody.extent(0));
@@ -161,16 +247,7 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
       Real lo0[3], hi0[3];
       cellBox(c, coords, lo0, hi0);
       for (int i = 0; i < 3; ++i) bb[i] = lo0[i], bb[3 + i] = hi0[i];
-      Real nlo[3] = {0.0, 0.0, 0.0}, nhi[3] = {0.0, 0.0, 0.0};
-      for (int i = 0; i < dim_; ++i) nlo[i] = std::numeric_limits<Real>::max(), nhi[i] = -nlo[i];
-      for (int a = 0; a < kMaxVolumeCellNodes && view_.cellNodes(c, a) >= 0; ++a)
-        for (int i = 0; i < dim_; ++i) {
-          const Real v = coords[std::size_t(dim_) * view_.cellNodes(c, a) + i];
-          nlo[i] = std::min(nlo[i], v);
-          nhi[i] = std::max(nhi[i], v);
-        }
-      sizes[c] = std::sqrt((nhi[0] - nlo[0]) * (nhi[0] - nlo[0]) + (nhi[1] - nlo[1]) * (nhi[1] - nlo[1]) +
-                           (nhi[2] - nlo[2]) * (nhi[2] - nlo[2]));
+      sizes[c] = cellSize(c, coords);
       double lo[3], hi[3];
       for (int i = 0; i < 3; ++i) {
         lo[i] = bb[i] - 0.5 * radius;
@@ -191,8 +268,10 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
         }
         if (gap2 > radius * radius) return;  // the boxes' corners are farther apart
         const Real gap = std::sqrt(gap2), size = std::max(sizes[p.info()], sizes[q.info()]);
-        out.push_back({p.info(), q.info(), gap, size});
-        out.push_back({q.info(), p.info(), gap, size});
+        const bool tet = cellTypeInfo(CellType(view_.cellType(p.info()))).simplex ||
+                         cellTypeInfo(CellType(view_.cellType(q.info()))).simplex;
+        out.push_back({p.info(), q.info(), gap, size, tet});
+        out.push_back({q.info(), p.info(), gap, size, tet});
       };
       // box_intersection_d reorders its inputs: work on copies
       std::vector<Box> bk = boxes[k], bl = boxes[l];
@@ -201,6 +280,107 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
   std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
     return a.rowCell != b.rowCell ? a.rowCell < b.rowCell : a.colCell < b.colCell;
   });
+  return out;
+}
+
+Real VolumeInteraction::cellSize(LocalIndex cell, const Real* coords) const {
+  const CellTypeInfo& row = cellTypeInfo(CellType(view_.cellType(cell)));
+  const int corners = cornerCount(row);
+  auto distance = [&](int a, int b) {
+    Real d2 = 0.0;
+    for (int i = 0; i < dim_; ++i) {
+      const Real d = coords[std::size_t(dim_) * view_.cellNodes(cell, a) + i] -
+                     coords[std::size_t(dim_) * view_.cellNodes(cell, b) + i];
+      d2 += d * d;
+    }
+    return std::sqrt(d2);
+  };
+  Real longest = 0.0;
+  if (row.simplex) {
+    for (int a = 0; a < corners; ++a)
+      for (int b = a + 1; b < corners; ++b) longest = std::max(longest, distance(a, b));
+    return 0.5 * longest;
+  }
+  // quadrilateral corners 0-1-2-3 around; hexahedron: 0-3 and 4-7 around, 0-4 .. 3-7 between
+  const int ring = corners == 8 ? 4 : corners;
+  for (int a = 0; a < ring; ++a) {
+    longest = std::max(longest, distance(a, (a + 1) % ring));
+    if (corners == 8) {
+      longest = std::max(longest, distance(4 + a, 4 + (a + 1) % ring));
+      longest = std::max(longest, distance(a, 4 + a));
+    }
+  }
+  return longest;
+}
+
+VolumeInteraction::OrderChoice VolumeInteraction::chooseOrder(Real size, Real gap, bool tet) const {
+  const int cap = tet ? std::min(maxOrder_, kMaxTetOrder) : maxOrder_;
+  const Real tolerance = options_.quadratureTolerance;
+  if (tolerance <= 0.0) return {options_.quadratureOrder, 0.0, true};
+  const Real r0 = potential_->r0() * lengthScale_;
+  // the closest the cells come before the next rebuild: each point moves by at most skin / 2
+  const Real closest = std::max(gap - skin(), kContactGapFloor * r0);
+  Real estimate = 0.0;
+  for (int n = options_.quadratureOrder; n <= cap; ++n) {
+    estimate = volumeQuadratureError(dim_, n, size, closest, r0);
+    if (estimate <= tolerance) return {n, estimate, true};
+  }
+  return {cap, estimate, false};
+}
+
+VolumeInteraction::ContactQuadrature VolumeInteraction::contactQuadrature(const Real* coords,
+                                                                        const std::vector<char>& surfaceCells) const {
+  ContactQuadrature out;
+  // the smallest gap between the bodies: a search radius doubled from cutoff + skin until a pair
+  // is found (bodies may start farther apart), at most the extent of the mesh
+  Real extent = 0.0;
+  for (int i = 0; i < dim_; ++i) {
+    Real lo = std::numeric_limits<Real>::max(), hi = -lo;
+    for (LocalIndex n : interactingNodes_) {
+      lo = std::min(lo, coords[std::size_t(dim_) * n + i]);
+      hi = std::max(hi, coords[std::size_t(dim_) * n + i]);
+    }
+    if (!interactingNodes_.empty()) extent += (hi - lo) * (hi - lo);
+  }
+  extent = std::sqrt(extent);
+  std::vector<Candidate> pairs;
+  for (Real radius = cutoff() + skin(); pairs.empty() && radius <= 2.0 * extent + cutoff() + skin(); radius *= 2.0)
+    pairs = candidates(coords, radius);
+  Real closest = std::numeric_limits<Real>::infinity();
+  for (const Candidate& c : pairs) closest = std::min(closest, c.gap);
+  const Real r0 = potential_->r0() * lengthScale_, contactGap = kContactGapFloor * r0;
+  out.neededSize = std::numeric_limits<Real>::infinity();
+  for (const Candidate& c : pairs) {
+    // the surface cells where the bodies first touch (within the skin of the smallest gap): the
+    // cells farther out come as close only as the contact grows; the run's summary counts the
+    // pairs the maximum order leaves above the tolerance then
+    if (c.gap > closest + skin()) continue;
+    if (!surfaceCells.empty() && (!surfaceCells[c.rowCell] || !surfaceCells[c.colCell])) continue;
+    const int cap = c.tet ? std::min(maxOrder_, kMaxTetOrder) : maxOrder_;
+    // the order the pair gets in contact: chooseOrder at a box gap that leaves contactGap
+    const OrderChoice choice = chooseOrder(c.size, contactGap + skin(), c.tet);
+    out.largestSize = std::max(out.largestSize, c.size);
+    // the worst pair: one that misses the tolerance before one that meets it, then the larger estimate
+    const bool worse = out.maxOrder == 0 || (out.withinTolerance && !choice.withinTolerance) ||
+                       (out.withinTolerance == choice.withinTolerance && choice.estimate > out.estimate);
+    if (worse) {
+      out.order = choice.order;
+      out.estimate = choice.estimate;
+      out.withinTolerance = choice.withinTolerance;
+      out.maxOrder = cap;
+    }
+    if (options_.quadratureTolerance > 0.0) {
+      // the largest size the cap brings within the tolerance at the contact gap (the estimate grows with size)
+      Real lo = 0.0, hi = c.size;
+      if (volumeQuadratureError(dim_, cap, hi, contactGap, r0) > options_.quadratureTolerance) {
+        for (int it = 0; it < 60; ++it) {
+          const Real mid = 0.5 * (lo + hi);
+          (volumeQuadratureError(dim_, cap, mid, contactGap, r0) <= options_.quadratureTolerance ? lo : hi) = mid;
+        }
+        out.neededSize = std::min(out.neededSize, lo);
+      }
+    }
+  }
   return out;
 }
 
@@ -268,25 +448,22 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
     // a point of a quadratic cell moves by up to maxPointMotion_ times its nodes' largest motion
     if (std::sqrt(moved2) * maxPointMotion_ <= 0.5 * skin) return false;
   }
-  const Real r0 = potential_->r0() * lengthScale_;
   pairs_.clear();
-  summary_.maxOrderUsed = 0;
-  summary_.numAtMaxOrder = 0;
+  LocalIndex atMax = 0, above = 0;
   summary_.minCellGap = std::numeric_limits<Real>::infinity();
   for (const Candidate& c : candidates(coords, cutoff + skin)) {
     if (!rowCells_.empty() && !rowCells_[c.rowCell]) continue;
-    const int extra = int(std::ceil(kCloseOrderFactor * c.size / std::max(c.gap, 0.5 * r0)));
-    // a tetrahedron's rule holds kMaxTetOrder^3 points on each of its four hexahedra
-    const int cap = cellTypeInfo(CellType(view_.cellType(c.rowCell))).simplex ||
-                            cellTypeInfo(CellType(view_.cellType(c.colCell))).simplex
-                        ? std::min(maxOrder_, kMaxTetOrder)
-                        : maxOrder_;
-    const int order = std::min(cap, options_.quadratureOrder + extra);
-    pairs_.push_back({c.rowCell, c.colCell, order});
-    summary_.maxOrderUsed = std::max(summary_.maxOrderUsed, order);
-    summary_.numAtMaxOrder += order == cap;
+    const OrderChoice choice = chooseOrder(c.size, c.gap, c.tet);
+    pairs_.push_back({c.rowCell, c.colCell, choice.order});
+    const int cap = c.tet ? std::min(maxOrder_, kMaxTetOrder) : maxOrder_;
+    summary_.maxOrderUsed = std::max(summary_.maxOrderUsed, choice.order);
+    summary_.maxErrorEstimate = std::max(summary_.maxErrorEstimate, choice.estimate);
+    atMax += choice.order == cap;
+    above += !choice.withinTolerance;
     summary_.minCellGap = std::min(summary_.minCellGap, c.gap);
   }
+  summary_.numAtMaxOrder = std::max(summary_.numAtMaxOrder, atMax);
+  summary_.numAboveTolerance = std::max(summary_.numAboveTolerance, above);
   pairsView_ = Kokkos::View<VolumePair*>("cgcm::volume_pairs", pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) pairsView_(k) = pairs_[k];
   builtCoords_.resize(interactingNodes_.size() * dim_);

@@ -23,11 +23,10 @@
 // vertex, through the edge midpoints, face centroids and the centroid: a
 // rule invariant under every permutation of the vertices, so that mirror
 // images of a mesh get mirror images of its points, with positive weights;
-// n <= kMaxTetOrder), n chosen per pair when the list is built:
-// n = base order + ceil(kCloseOrderFactor size / max(distance, r0 / 2)), at
-// most the maximum order, with size the larger cell diameter and distance the
-// gap between the cells' bounding boxes, so that close pairs, where the
-// integrand varies on the scale of the gap, get more points. Quadratic cells
+// n <= kMaxTetOrder), n chosen per pair when the list is built from an error
+// estimate: the lowest order from the base order up whose estimated error
+// (volumeQuadratureError) at the closest gap the pair can reach before the next
+// rebuild is within the tolerance; see VolumeInteractionOptions. Quadratic cells
 // map the same points with their own shape functions (curved cells: det J0
 // and the axisymmetric 2 pi R of the quadratic map); their bounding boxes
 // are grown to hold the curved cell (VolumeInteraction.cpp, cellBound).
@@ -58,13 +57,6 @@ namespace cgcm::interaction {
 
 /// Highest quadrature order per direction (the kernel's stack arrays hold
 /// one cell's points: 12^2 in 2D, 6^3 in 3D).
-/// Extra Gauss points per direction a pair gets per cell size over gap. The r^-12
-/// repulsion changes by a factor e over r/12, so cells of about r0 in contact
-/// need 6-10 points per direction: on a JKR contact state (cells of 0.8 r0) the
-/// force on the sphere is 23 % off with the factor 1, 0.26 % with 2 and 2e-5
-/// with 3 (against orders up to 12 everywhere), for 1.1 and 1.5 times the point
-/// pairs of the factor 1 (doc/theory.md#method-1).
-constexpr Real kCloseOrderFactor = 3.0;
 constexpr int kMaxVolumeOrder2D = 12;
 constexpr int kMaxVolumeOrder3D = 6;
 constexpr int kMaxTetOrder = 4;
@@ -83,6 +75,12 @@ struct VolumeInteractionOptions {
   /// Most points per direction for close pairs; 0: the largest the kernel
   /// holds (kMaxVolumeOrder2D, kMaxVolumeOrder3D).
   int maxQuadratureOrder = 0;
+  /// Each pair gets the lowest order (>= quadratureOrder) whose estimated relative error of the
+  /// pair's force (volumeQuadratureError) at the closest gap it can reach before the next list rebuild,
+  /// max(box gap - skin, kContactGapFloor r0), is at most this; pairs the maximum order cannot
+  /// bring within it keep the maximum and are counted (summary). 0: no estimate, every pair
+  /// takes quadratureOrder.
+  Real quadratureTolerance = 1e-4;
   /// Absolute cutoff: pairs of cells whose bounding boxes are farther apart
   /// are skipped. <= 0 selects 10 r0 (the traction between flat blocks is then
   /// within 0.2 % of sigma_max; 5 r0: 1 %).
@@ -125,8 +123,11 @@ struct VolumeInteractionSummary {
   long numListBuilds = 0;          ///< pair lists built so far
   LocalIndex numPairs = 0;         ///< directed pairs in the list (of the row cells set)
   long numPointPairs = 0;          ///< quadrature-point pairs of the last evaluate (this rank)
-  int maxOrderUsed = 0;            ///< highest quadrature order in the list
-  LocalIndex numAtMaxOrder = 0;    ///< directed pairs capped at the maximum order
+  int maxOrderUsed = 0;            ///< highest quadrature order of every list built so far
+  LocalIndex numAtMaxOrder = 0;    ///< most directed pairs at the maximum order in a list built so far
+  /// most directed pairs of a list built so far whose estimate exceeds the tolerance at the maximum order
+  LocalIndex numAboveTolerance = 0;
+  Real maxErrorEstimate = 0.0;     ///< largest estimated pair error of every list built so far
   Real minCellGap = 0.0;           ///< smallest bounding-box gap between paired cells at the last build
   Real energy = 0.0;               ///< interaction energy of the pairs evaluated (last evaluate)
   long totalPointPairs = 0;        ///< quadrature-point pairs of every evaluate so far (this rank)
@@ -134,6 +135,26 @@ struct VolumeInteractionSummary {
   /// Per body: resultant of the interaction forces on it (last evaluate, pairs evaluated here).
   std::vector<std::array<Real, 3>> resultant;
 };
+
+/// The gap, in r0, below which the order of a pair is not raised further: surfaces in adhesive
+/// contact are about r_S0 = 0.64 r0 apart, and r0 / 2 under a compressive traction of about
+/// 17 sigma_max (Lennard-Jones half-spaces), beyond any load of the decks.
+constexpr Real kContactGapFloor = 0.5;
+
+/// Estimated quadrature error of the force of one cell pair, order n per direction in both cells
+/// (dim 2: plane strain and axisymmetric; dim 3), relative to the larger of the pair's repulsive
+/// and attractive parts: size = the longest edge of the larger cell (a tetrahedron's
+/// sub-hexahedra: half its longest edge), gap = the distance of the cells, r0 of the potential.
+/// The Gauss rule's relative errors of the r^-12 and r^-6 parts of the force, E12 and E6, are a
+/// table measured on two facing squares or cubes of edge size at that gap
+/// (tools/volume_quadrature_error.py; they depend on size/gap and n alone). Relative to the
+/// larger part, the attractive part counts at most 1 and the repulsive part at most (r0/g)^6 (the
+/// ratio of the parts' point forces at the closest distance g): E12 min(1, (r0/g)^6) + E6. Far
+/// pairs are held to E6 (their repulsion is negligible), pairs in contact to E12 + E6. Summed over
+/// the pairs, the error of the force on a body is at most the tolerance times the sum of the
+/// pairs' larger parts.
+/// size/gap beyond 16, the table's end: E = 1.
+Real volumeQuadratureError(int dim, int order, Real size, Real gap, Real r0);
 
 namespace detail {
 
@@ -382,6 +403,31 @@ class VolumeInteraction final : public Interaction {
   void invalidatePairs() { built_ = false; }
   const std::vector<VolumePair>& pairs() const { return pairs_; }
 
+  /// The order a pair of cells at box gap `gap` gets (size: see volumeQuadratureError; tet: a
+  /// tetrahedron in the pair, whose cap is kMaxTetOrder) and its error estimate, at the closest
+  /// gap it can reach before the list is rebuilt: max(gap - skin, kContactGapFloor r0).
+  struct OrderChoice {
+    int order;
+    Real estimate;
+    bool withinTolerance;
+  };
+  OrderChoice chooseOrder(Real size, Real gap, bool tet) const;
+
+  /// The pairs of cells that come into contact: pairs of surface cells (surfaceCells[cell] != 0;
+  /// empty: every cell) whose box gap at `coords` is within the skin of the smallest gap
+  /// between the bodies (where they first touch), and the order each needs at the contact gap kContactGapFloor r0. largestSize: the
+  /// largest cell size (volumeQuadratureError) among them; neededSize: the largest size whose
+  /// estimate at the maximum order meets the tolerance (infinite if all meet it).
+  struct ContactQuadrature {
+    Real largestSize = 0.0;
+    Real neededSize = 0.0;
+    int order = 0;          ///< the order the largest cells get there
+    Real estimate = 0.0;    ///< their estimate at that order
+    bool withinTolerance = true;
+    int maxOrder = 0;       ///< the cap those pairs have (kMaxTetOrder with a tetrahedron)
+  };
+  ContactQuadrature contactQuadrature(const Real* coords, const std::vector<char>& surfaceCells = {}) const;
+
   /// Keeps only the directed pairs whose row cell has rowCells[cell] != 0 in
   /// the pair lists built from now on (a rank's own cells: it writes only
   /// their rows); empty (the default): every pair.
@@ -414,9 +460,12 @@ class VolumeInteraction final : public Interaction {
   /// `radius` (with each pair's box gap and size).
   struct Candidate {
     LocalIndex rowCell, colCell;
-    Real gap, size;
+    Real gap, size;  ///< box gap; the larger cell's size (volumeQuadratureError)
+    bool tet;        ///< a tetrahedron in the pair
   };
   std::vector<Candidate> candidates(const Real* coords, Real radius) const;
+  /// The size of volumeQuadratureError: the longest corner-to-corner edge (tetrahedra: half of it).
+  Real cellSize(LocalIndex cell, const Real* coords) const;
   template <Formulation F, int MaxNodes, class Scatter>
   void run(const Kokkos::View<const VolumePair*>& pairs, const Real* coords, Scatter scatter, bool withTangent);
   template <Formulation F, class Scatter>
