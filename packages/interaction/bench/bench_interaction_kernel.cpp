@@ -6,7 +6,10 @@
 // Geometry: axisymmetric sphere (R = 100 r0) at h0 = r_S0 above a flat, LJ
 // potential, cutoff 10 r0, 4 Gauss points per segment. Reports the search
 // (pair list), the evaluation with and without tangent through the driver,
-// the bare kernel, and the same tangent by forward AD (Sacado) for scale.
+// the bare kernel, and the same tangent by forward AD (Sacado) for scale;
+// then the same bodies as curved segments through the same nodes, and in 3D
+// a cube-sphere cap over a flat square as flat QUAD4 or curved QUAD9 facets
+// through the same nodes.
 #include <Kokkos_Core.hpp>
 #include <Sacado.hpp>
 #include <chrono>
@@ -57,6 +60,33 @@ mesh::Surface curvedChain(std::vector<Real>& coords, int n, Curve&& curve, int b
     coords.push_back(y);
   }
   for (int i = 0; i < n; ++i) s.facets.insert(s.facets.end(), {first + 2 * i, first + 2 * i + 2, first + 2 * i + 1});
+  return s;
+}
+
+// 3D: the (2m + 1)^2 grid points of a surface (point(i, j, x) for i, j in 0 .. 2m) as 2m x 2m flat
+// QUAD4 or m x m curved QUAD9 facets; `flip` reverses their orientation.
+template <class Point>
+mesh::Surface grid3D(std::vector<Real>& coords, int m, bool curved, bool flip, Point&& point, int body) {
+  const int n = 2 * m + 1;
+  const LocalIndex first = LocalIndex(coords.size() / 3);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Real x[3];
+      point(i, j, x);
+      coords.insert(coords.end(), x, x + 3);
+    }
+  auto id = [&](int i, int j) { return first + LocalIndex(flip ? i * n + j : j * n + i); };
+  mesh::Surface s{body, curved ? 9 : 4, {}, {}};
+  const int step = curved ? 2 : 1;
+  for (int j = 0; j + step < n; j += step)
+    for (int i = 0; i + step < n; i += step) {
+      if (!curved) {
+        s.facets.insert(s.facets.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        continue;
+      }
+      s.facets.insert(s.facets.end(), {id(i, j), id(i + 2, j), id(i + 2, j + 2), id(i, j + 2), id(i + 1, j),
+                                       id(i + 2, j + 1), id(i + 1, j + 2), id(i, j + 1), id(i + 1, j + 1)});
+    }
   return s;
 }
 
@@ -224,6 +254,50 @@ int main(int argc, char** argv) {
               1e9 * seconds(u1, u2) / reps / cs.numPairs, 1e3 * seconds(u1, u2) / reps);
   std::printf("  driver f only                 %8.1f ns per pair\n", 1e9 * seconds(u2, u3) / reps / cs.numPairs);
   std::printf("  resultants: sphere %.4f, flat %.4f\n", cs.resultant[1][1], cs.resultant[0][1]);
+
+  // 3D: the sphere's lower cube face (m x m patches, nodes on the sphere) over a flat square, as flat
+  // QUAD4 facets or as curved QUAD9 facets through the same nodes
+  const int m = 24;
+  for (bool curvedFacets : {false, true}) {
+    std::vector<Real> c3;
+    std::vector<mesh::Surface> s3;
+    const Real L = 1.1 * rhoMax;
+    s3.push_back(grid3D(c3, m, curvedFacets, false, [&](int i, int j, Real* x) {
+      x[0] = -L + 2.0 * L * i / (2 * m), x[1] = -L + 2.0 * L * j / (2 * m), x[2] = 0.0;
+    }, 0));
+    s3.push_back(grid3D(c3, m, curvedFacets, true, [&](int i, int j, Real* x) {
+      const Real a = std::tan(0.25 * pi * (-1.0 + Real(i) / m)), b = std::tan(0.25 * pi * (-1.0 + Real(j) / m));
+      const Real len = std::sqrt(a * a + b * b + 1.0);
+      x[0] = R * a / len, x[1] = R * b / len, x[2] = R + h0 - R / len;
+    }, 1));
+    SurfaceInteractionOptions o3;
+    o3.formulation = Formulation::ThreeD;
+    SurfaceInteraction s3i(s3, {1.0, 1.0}, lj, o3);
+    s3i.updatePairs(c3);
+    Real sum3 = 0.0;
+    auto consume = [&](const auto& c) { sum3 += c.f[0] + c.K[0][0]; };
+    s3i.evaluate(c3.data(), consume);  // warm-up
+    const auto v0 = Clock::now();
+    for (int r = 0; r < reps; ++r) s3i.setEvaluatedFacets({}), s3i.updatePairs(c3);
+    const auto v1 = Clock::now();
+    for (int r = 0; r < reps; ++r) s3i.evaluate(c3.data(), consume, true);
+    const auto v2 = Clock::now();
+    for (int r = 0; r < reps; ++r) s3i.evaluate(c3.data(), consume, false);
+    const auto v3 = Clock::now();
+    const InteractionSummary& s3s = s3i.summary();
+    std::printf("3D sphere cap over a flat, %s facets through %d x %d nodes each: %d pairs, %d blended\n",
+                curvedFacets ? "curved QUAD9" : "flat QUAD4", 2 * m + 1, 2 * m + 1, int(s3s.numPairs),
+                int(s3s.numBlended));
+    std::printf("  search (pair list)            %8.1f ns per quadrature point (%.2f ms per update)\n",
+                1e9 * seconds(v0, v1) / reps / s3s.numQuadraturePoints, 1e3 * seconds(v0, v1) / reps);
+    std::printf("  driver f + K (Sacado AD)      %8.1f ns per pair (%.2f ms per evaluation)\n",
+                1e9 * seconds(v1, v2) / reps / s3s.numPairs, 1e3 * seconds(v1, v2) / reps);
+    std::printf("  driver f only                 %8.1f ns per pair (%.2f ms per evaluation)\n",
+                1e9 * seconds(v2, v3) / reps / s3s.numPairs, 1e3 * seconds(v2, v3) / reps);
+    std::printf("  resultants: sphere %.4f, flat %.4f (-2 pi w R = %.4f)\n", s3s.resultant[1][2], s3s.resultant[0][2],
+                -2 * pi * lj->workOfAdhesion(1, 1) * R);
+    sink += sum3;
+  }
   volatile Real keep = sink + ksum;  // keeps the timed loops from being optimised away
   (void)keep;
   return 0;
