@@ -152,8 +152,8 @@ Teuchos::RCP<const ParameterList> validParameters() {
            "1: linear cells (QUAD4; HEX8, TETRA4), or 2: quadratic cells with mid-edge nodes, QUAD9 (QUAD8 with "
            "Serendipity), HEX27 (HEX20), TETRA10, whose edges and faces follow curved boundaries: the sphere's "
            "arc of the built-in geometries (in 3D its surface); a .geo's curves and surfaces (gmsh's Mesh.ElementOrder). A .msh file "
-           "is read as it is and its cells must have this order. Method 1 takes either order; Method 3 takes "
-           "order 2 in plane strain and axisymmetry (on the curved segments) and order 1 in 3D",
+           "is read as it is and its cells must have this order. Both interaction methods take either order "
+           "(Method 3 on the curved segments and facets)",
            intBetween(1, 2));
     g->set("Serendipity", false,
            "Element Order = 2: quadrilaterals and hexahedra without their face and volume centre nodes, QUAD8 "
