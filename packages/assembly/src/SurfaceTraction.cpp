@@ -1,10 +1,104 @@
 #include "cgcm/assembly/SurfaceTraction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "cgcm/interaction/Quadrature.hpp"
 
 namespace cgcm::assembly {
+
+namespace {
+
+/// The traction t (3 per node) whose consistent node forces on the curved 3D facets of `surfaces` are
+/// `force`: M t = force with the surface mass matrix M_ab = int N_a N_b da over those facets (current
+/// coordinates x), by conjugate gradients with Jacobi preconditioning (M is symmetric positive definite).
+/// Only the nodes of curved facets are written; returns whether any facet was curved.
+bool projectOntoCurvedFacets(const std::vector<mesh::Surface>& surfaces, const std::vector<Real>& x,
+                             const std::vector<Real>& force, std::vector<Real>& traction) {
+  const std::size_t nn = x.size() / 3;
+  std::vector<LocalIndex> local(nn, -1), nodes;
+  std::vector<std::vector<std::pair<LocalIndex, Real>>> rows;
+  auto index = [&](LocalIndex n) {
+    if (local[std::size_t(n)] < 0) {
+      local[std::size_t(n)] = LocalIndex(nodes.size());
+      nodes.push_back(n);
+      rows.emplace_back();
+    }
+    return local[std::size_t(n)];
+  };
+  for (const mesh::Surface& s : surfaces) {
+    const int npf = s.nodesPerFacet;
+    if (npf <= 4 || s.numFacets() == 0) continue;
+    // N_a N_b da is of degree 4 in the parameters times the area element's: 4 points per direction
+    const std::vector<interaction::FacetPoint> rule = interaction::facetQuadrature(npf, 4);
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      const LocalIndex* n = &s.facets[std::size_t(f) * npf];
+      LocalIndex id[9];
+      for (int a = 0; a < npf; ++a) id[a] = index(n[a]);
+      for (const interaction::FacetPoint& q : rule) {
+        Real g[2][3] = {};
+        for (int a = 0; a < npf; ++a)
+          for (int d = 0; d < 2; ++d)
+            for (int i = 0; i < 3; ++i) g[d][i] += q.dN[d][a] * x[3 * std::size_t(n[a]) + i];
+        const Real m[3] = {g[0][1] * g[1][2] - g[0][2] * g[1][1], g[0][2] * g[1][0] - g[0][0] * g[1][2],
+                           g[0][0] * g[1][1] - g[0][1] * g[1][0]};
+        const Real da = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * q.weight;
+        for (int a = 0; a < npf; ++a)
+          for (int b = 0; b < npf; ++b) rows[std::size_t(id[a])].emplace_back(id[b], q.N[a] * q.N[b] * da);
+      }
+    }
+  }
+  if (nodes.empty()) return false;
+  const std::size_t k = nodes.size();
+  std::vector<Real> diagonal(k, 0.0);
+  for (std::size_t r = 0; r < k; ++r) {  // merge each row's repeated columns
+    auto& row = rows[r];
+    std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (w > 0 && row[w - 1].first == row[i].first) row[w - 1].second += row[i].second;
+      else row[w++] = row[i];
+    }
+    row.resize(w);
+    for (const auto& [c, v] : row)
+      if (std::size_t(c) == r) diagonal[r] = v;
+  }
+  auto multiply = [&](const std::vector<Real>& v, std::vector<Real>& out) {
+    for (std::size_t r = 0; r < k; ++r) {
+      Real sum = 0.0;
+      for (const auto& [c, m] : rows[r]) sum += m * v[std::size_t(c)];
+      out[r] = sum;
+    }
+  };
+  auto dot = [&](const std::vector<Real>& a, const std::vector<Real>& b) {
+    Real sum = 0.0;
+    for (std::size_t r = 0; r < k; ++r) sum += a[r] * b[r];
+    return sum;
+  };
+  std::vector<Real> t(k), res(k), z(k), p(k), Mp(k);
+  for (int i = 0; i < 3; ++i) {
+    for (std::size_t r = 0; r < k; ++r) res[r] = force[3 * std::size_t(nodes[r]) + i], t[r] = 0.0;
+    const Real target = 1e-14 * std::sqrt(dot(res, res));
+    for (std::size_t r = 0; r < k; ++r) p[r] = z[r] = res[r] / diagonal[r];
+    Real rz = dot(res, z);
+    for (std::size_t it = 0; it < 10 * k && std::sqrt(dot(res, res)) > target; ++it) {
+      multiply(p, Mp);
+      const Real alpha = rz / dot(p, Mp);
+      for (std::size_t r = 0; r < k; ++r) t[r] += alpha * p[r], res[r] -= alpha * Mp[r];
+      for (std::size_t r = 0; r < k; ++r) z[r] = res[r] / diagonal[r];
+      const Real next = dot(res, z);
+      for (std::size_t r = 0; r < k; ++r) p[r] = z[r] + (next / rz) * p[r];
+      rz = next;
+    }
+    for (std::size_t r = 0; r < k; ++r) traction[3 * std::size_t(nodes[r]) + i] = t[r];
+  }
+  return true;
+}
+
+}  // namespace
 
 SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulation, const std::vector<Real>& u,
                                   const std::vector<Real>& force) {
@@ -103,11 +197,20 @@ SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulatio
   }
   out.traction.assign(d * std::size_t(nn), 0.0);
   out.pressure.assign(std::size_t(nn), 0.0);
+  // curved 3D facets: the traction whose consistent forces are the node forces (their lumped areas
+  // are not in proportion to those forces: a TRI6's corners carry none of a uniform traction)
+  std::vector<Real> projected(d == 3 ? 3 * std::size_t(nn) : 0, 0.0);
+  std::vector<char> onCurved(std::size_t(nn), 0);
+  if (d == 3 && projectOntoCurvedFacets(mesh.surfaces, x, force, projected))
+    for (const mesh::Surface& s : mesh.surfaces)
+      if (s.nodesPerFacet > 4)
+        for (LocalIndex n : s.facets) onCurved[std::size_t(n)] = 1;
   for (LocalIndex n = 0; n < nn; ++n) {
     if (!(area[n] > 0.0)) continue;
     Real tn = 0.0, len2 = 0.0;
     for (int i = 0; i < d; ++i) {
-      const Real t = force[d * std::size_t(n) + i] / area[n], m = normal[d * std::size_t(n) + i];
+      const Real t = onCurved[std::size_t(n)] ? projected[3 * std::size_t(n) + i] : force[d * std::size_t(n) + i] / area[n];
+      const Real m = normal[d * std::size_t(n) + i];
       out.traction[d * std::size_t(n) + i] = t;
       tn += t * m;
       len2 += m * m;

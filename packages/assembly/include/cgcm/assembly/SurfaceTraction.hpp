@@ -33,10 +33,12 @@ struct SurfaceTractions {
 /// times 2 pi r in axisymmetry, 1/3 of a triangle's and 1/4 of a
 /// quadrilateral's area (the sum of its corner triangles' area vectors) in 3D. Quadratic facets:
 /// in 2D the integral of the node's shape function over the curved edge (exact for a uniform
-/// traction); in 3D the straight pieces through the facet's nodes (Tri6: four triangles, Quad8:
-/// four corner triangles and the mid-edge quadrilateral, Quad9: four quadrilaterals), lumped as
-/// above, an approximation: the consistent node forces of a quadratic facet are not in
-/// proportion to these areas (a uniform traction shows larger at mid-edge nodes than at corners).
+/// traction); in 3D the area is that of the straight pieces through the facet's nodes (Tri6: four
+/// triangles, Quad8: four corner triangles and the mid-edge quadrilateral, Quad9: four
+/// quadrilaterals), lumped as above, and the traction is not force over area (a Tri6's corners
+/// carry none of a uniform traction's consistent forces) but the traction whose consistent node
+/// forces on the curved facets are the node forces: the solution of M t = force, M_ab = int N_a
+/// N_b da over those facets, exact for every traction their shape functions hold.
 SurfaceTractions surfaceTractions(const mesh::Mesh& mesh, Formulation formulation, const std::vector<Real>& u,
                                   const std::vector<Real>& force);
 
