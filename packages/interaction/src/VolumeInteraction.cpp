@@ -314,14 +314,16 @@ Real VolumeInteraction::cellSize(LocalIndex cell, const Real* coords) const {
 }
 
 VolumeInteraction::OrderChoice VolumeInteraction::chooseOrder(Real size, Real gap, bool tet) const {
+  // a tetrahedron's rule holds kMaxTetOrder^3 points on each of its four hexahedra: the base order too is capped
   const int cap = tet ? std::min(maxOrder_, kMaxTetOrder) : maxOrder_;
+  const int base = std::min(options_.quadratureOrder, cap);
   const Real tolerance = options_.quadratureTolerance;
-  if (tolerance <= 0.0) return {options_.quadratureOrder, 0.0, true};
+  if (tolerance <= 0.0) return {base, 0.0, true};
   const Real r0 = potential_->r0() * lengthScale_;
   // the closest the cells come before the next rebuild: each point moves by at most skin / 2
   const Real closest = std::max(gap - skin(), kContactGapFloor * r0);
   Real estimate = 0.0;
-  for (int n = options_.quadratureOrder; n <= cap; ++n) {
+  for (int n = base; n <= cap; ++n) {
     estimate = volumeQuadratureError(dim_, n, size, closest, r0);
     if (estimate <= tolerance) return {n, estimate, true};
   }

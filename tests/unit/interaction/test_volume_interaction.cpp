@@ -892,5 +892,31 @@ TEST(VolumeQuadrature, EstimateBoundsTheMeasuredErrorOfOnePair) {
     }
 }
 
+
+// A base order above what a tetrahedron's rule holds (kMaxTetOrder on each of its sub-hexahedra) is
+// capped for tetrahedra, with the error estimate on or off: no pair asks for more points than the
+// kernel holds, and the forces are those of the capped order.
+TEST(VolumeInteraction, TetrahedraCapTheBaseOrder) {
+  const TwoBodies t = twoBodies(Formulation::ThreeD, CellType::Tet4);
+  auto forces = [&](int order, Real tolerance) {
+    VolumeInteractionOptions o;
+    o.formulation = Formulation::ThreeD;
+    o.quadratureOrder = order;
+    o.quadratureTolerance = tolerance;
+    o.cutoff = 1e3;  // every pair
+    VolumeInteraction vi(t.mesh, {1.2, 0.9}, makePotential("lennard-jones", 0.7, 0.3), o);
+    std::vector<Real> x = t.mesh.coords;
+    EXPECT_TRUE(vi.updatePairs(x.data()));
+    EXPECT_LE(vi.summary().maxOrderUsed, kMaxTetOrder) << order << " " << tolerance;
+    assemble(vi, x, false);
+    return vi.summary().resultant[0];
+  };
+  const auto capped = forces(kMaxTetOrder, 0.0);
+  for (Real tolerance : {0.0, 1e-4}) {
+    const auto above = forces(6, tolerance);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(above[i], capped[i], 1e-12 * (std::abs(capped[i]) + 1e-300)) << tolerance;
+  }
+}
+
 }  // namespace
 }  // namespace cgcm::interaction

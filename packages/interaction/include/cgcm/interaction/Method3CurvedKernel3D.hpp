@@ -31,6 +31,7 @@
 // tests compare it with central differences.
 #include <Sacado.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -316,7 +317,12 @@ inline Real projectOntoFacet(const Real* x, const Real* y, PatchFoot& foot) {
     if (!(det > 0.0)) break;
     const Real du = -(h11 * g0 - h01 * g1) / det, dv = -(h00 * g1 - h01 * g0) / det;
     const Real step = std::max(std::abs(du), std::abs(dv));
-    if (step <= 1e-13 && minimum) {
+    // converged: a step at the rounding of g, eps (|x| + |r|) |y_,i|, over |y_,i|^2 (coordinates far
+    // from the origin, or facets much smaller than the distance, have a larger floor than 1e-13)
+    const Real scale = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2])}) + std::sqrt(detail::dot3(r, r));
+    const Real floor = 16.0 * std::numeric_limits<Real>::epsilon() * scale /
+                       std::sqrt(std::min(detail::dot3(j.yu, j.yu), detail::dot3(j.yv, j.yv)));
+    if (step <= std::max(1e-13, floor) && minimum) {
       if (!insideFacetDomain<N>(u, v)) break;  // on or beyond the boundary: the edges hold it
       const Real d2 = detail::dot3(r, r);
       if (d2 < best) best = d2, foot.u = u, foot.v = v, foot.region = 0;

@@ -296,8 +296,13 @@ class SurfaceInteraction final : public Interaction {
   void updatePairs(const std::vector<Real>& coords) { updatePairs(coords.data()); }
   const std::vector<InteractionPair>& pairs() const { return pairs_; }
 
-  /// Whether the surfaces are curved 3D facets: their contributions are CurvedPairContribution.
-  bool curvedFacets3D() const { return dim_ == 3 && !surfaces_.empty() && curved(0); }
+  /// Whether the surfaces are curved 3D facets (every body's, or none's): their contributions are
+  /// CurvedPairContribution.
+  bool curvedFacets3D() const {
+    for (int k = 0; dim_ == 3 && k < numBodies(); ++k)
+      if (surfaces_[k].numFacets() > 0) return curved(k);
+    return false;
+  }
 
   /// Evaluates one pair at `coords` (thread-safe: usable inside a parallel
   /// loop over pairs()): the blend over its targets, or the single target's
