@@ -169,7 +169,7 @@ Teuchos::RCP<const ParameterList> validParameters() {
                  atLeast(2.0));
     g->set("Mesh Refinement", 0,
                  "level 0 (about 1400 nodes) .. 6; each level halves every cell. -1 doubles those of level 0: "
-                 "with Element Order = 2 it has the nodes of the linear level 0",
+                 "with Element Order = 2 it has as many nodes as the linear level 0",
                  intBetween(mesh::kCoarsestLevel, mesh::kFinestLevel));
     g->set("Contact Zone Size", 0.5,
                  "radial extent of the finest cells around the axis, in sphere radii (0.02 .. 0.85): 20 cells on "
@@ -312,7 +312,7 @@ void buildSphereOnHalfSpaceQuarter(const ParameterList& g, const ContactDistance
                      " with Contact Zone Size = " + zoneText.str() + ": the core around the axis (radius about " +
                      "Azimuthal Cells x Contact Zone Size / 40 sphere radii) would not turn into circles within the "
                      "sphere; at most " +
-                     std::to_string(largest - largest % 2) + " cells fit, or a smaller Contact Zone Size");
+                     std::to_string(largest - largest % (level < 0 ? 4 : 2)) + " cells fit, or a smaller Contact Zone Size");
   }
   const Real R0 = g.get<double>("Sphere Radius");
   const Real rS0 = contactDistance();  // u = 0: undeformed surfaces r_S0 apart

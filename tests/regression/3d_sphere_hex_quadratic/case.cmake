@@ -1,6 +1,6 @@
 # 3D on the built-in hexahedral quarter model with quadratic cells (HEX27 at Mesh Refinement -1, the
 # meridian cells twice those of level 0, 4 azimuthal cells at level 0, i.e. 2: 6426 nodes, 19 278
-# unknowns, the nodes of the linear level-0 model; Method 3 on the curved QUAD9 facets) against the
+# unknowns, as many as the linear level-0 model; Method 3 on the curved QUAD9 facets) against the
 # axisymmetric benchmark converged (QUAD9 at level 1: P_min -5.5964e-4 at u = -0.0015,
 # P(0.06) = 1.007114e-2, dP/du on [0.05, 0.06] = 0.260467). Measured: P_min -0.25 %, P(0.06)
 # +0.04 %, dP/du -0.40 %; the linear HEX8 model with the same nodes (../3d_sphere_hex) is 2.2 % weaker

@@ -21,7 +21,7 @@ std::vector<Real> fineThenGeometric(Real length, Real fineLength, int fineCells,
 std::vector<Real> geometric(Real length, Real first, int cells);
 
 /// The built-in meshes' levels: Geometry/Mesh Refinement -1 .. 6. Level -1 doubles every cell of
-/// level 0: with quadratic cells it has the nodes of the linear level 0.
+/// level 0: with quadratic cells it has as many nodes as the linear level 0.
 inline constexpr int kCoarsestLevel = -1, kFinestLevel = 6;
 
 /// n cells at level 0 at `level` (doubled per level; halved at level -1, rounded down).
