@@ -586,6 +586,31 @@ void blendWeights(const Real* rho, int nt, int closest, Real delta, Real* w) {
   for (int t = 0; t < nt; ++t) w[t] /= sum;
 }
 
+// The blended contribution of nt curved targets (header): out.f = sum_t w_t f_t and, with the
+// tangent, out.K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta] (no cancellation of terms of size
+// f/delta) over out's first ncols columns. Target t: f_t at f + t fStride, its K_t rows of nz[t]
+// entries at K + t kStride, drho_t at Jrho + t zStride, z entry j in column colOf[t zStride + j].
+template <class Contribution>
+void blendContributions(Contribution& out, int nt, int nf, int ncols, const Real* rho, int closest, Real delta,
+                        const Real* f, int fStride, const Real* K, int kStride, const int* nz, const int* colOf,
+                        const Real* Jrho, int zStride, bool withTangent) {
+  Real w[kMaxBlendTargets3D];
+  blendWeights(rho, nt, closest, delta, w);
+  for (int i = 0; i < nf; ++i) {
+    out.f[i] = 0.0;
+    for (int t = 0; t < nt; ++t) out.f[i] += w[t] * f[t * fStride + i];
+  }
+  if (!withTangent) return;
+  for (int i = 0; i < nf; ++i)
+    for (int c = 0; c < ncols; ++c) out.K[i][c] = 0.0;
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < nf; ++i) {
+      const Real g = nt > 1 ? w[t] * (out.f[i] - f[t * fStride + i]) / delta : 0.0;
+      for (int j = 0; j < nz[t]; ++j)
+        out.K[i][colOf[t * zStride + j]] += w[t] * K[t * kStride + i * nz[t] + j] + g * Jrho[t * zStride + j];
+    }
+}
+
 bool allFinite(const Real f[4]) {
   return std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2]) && std::isfinite(f[3]);
 }
@@ -880,21 +905,8 @@ PairState SurfaceInteraction::evaluateCurvedPair(const P& potential, const Real*
     if (rho[t] < rho[closest]) closest = t;
   }
   out.numColNodes = nc;
-  Real wt[kMaxBlendTargets];
-  blendWeights(rho, nt, closest, delta, wt);
-  for (int i = 0; i < nf; ++i) {
-    out.f[i] = 0.0;
-    for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];
-  }
-  if (!withTangent) return st[closest];
-  // as the straight segments' blend: K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta]
-  for (int i = 0; i < nf; ++i)
-    for (int c = 0; c < 2 * nc; ++c) out.K[i][c] = 0.0;
-  for (int t = 0; t < nt; ++t)
-    for (int i = 0; i < nf; ++i) {
-      const Real g = nt > 1 ? wt[t] * (out.f[i] - f[t][i]) / delta : 0.0;
-      for (int j = 0; j < nz[t]; ++j) out.K[i][colOf[t][j]] += wt[t] * K[t][i * nz[t] + j] + g * Jrho[t][j];
-    }
+  blendContributions(out, nt, nf, 2 * nc, rho, closest, delta, &f[0][0], 6, &K[0][0], 6 * kz, nz, &colOf[0][0],
+                     &Jrho[0][0], kz, withTangent);
   return st[closest];
 }
 
@@ -946,21 +958,10 @@ PairState SurfaceInteraction::evaluateCurvedPair3D(const P& potential, const Rea
     if (rho[t] < rho[closest]) closest = t;
   }
   out.numColNodes = nc;
-  Real wt[kMaxBlendTargets3D];
-  blendWeights(rho, nt, closest, delta, wt);
-  for (int i = 0; i < nf; ++i) {
-    out.f[i] = 0.0;
-    for (int t = 0; t < nt; ++t) out.f[i] += wt[t] * f[t][i];
-  }
-  if (!withTangent) return st[closest];
-  // as the flat facets' blend: K = sum_t w_t [K_t + (f - f_t) (x) drho_t / delta]
-  for (int i = 0; i < nf; ++i)
-    for (int c = 0; c < 3 * nc; ++c) out.K[i][c] = 0.0;
-  for (int t = 0; t < nt; ++t)
-    for (int i = 0; i < nf; ++i) {
-      const Real g = nt > 1 ? wt[t] * (out.f[i] - f[t][i]) / delta : 0.0;
-      for (int j = 0; j < nz; ++j) out.K[i][colOf[t][j]] += wt[t] * K[t][i * nz + j] + g * Jrho[t][j];
-    }
+  int nzOf[kMaxBlendTargets3D];
+  for (int t = 0; t < nt; ++t) nzOf[t] = nz;
+  blendContributions(out, nt, nf, 3 * nc, rho, closest, delta, &f[0][0], 27, &K[0][0], 27 * kz, nzOf,
+                     &colOf[0][0], &Jrho[0][0], kz, withTangent);
   return st[closest];
 }
 
