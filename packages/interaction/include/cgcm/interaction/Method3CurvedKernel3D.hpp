@@ -233,33 +233,14 @@ inline S facetBlendDistance(const S* d, const S& r, const S* tu, const S* tv, in
 template <int NF, int NS, class S, class Law>
 inline void curvedPairResidual3D(const S* z, const FacetPoint& q, const PatchFoot& foot, const Law& law, Real delta,
                                  const Real* referenceArea, S* f, S& rho, PairState& st) {
-  S x[3] = {0.0, 0.0, 0.0}, g[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-  for (int a = 0; a < NF; ++a)
-    for (int i = 0; i < 3; ++i) {
-      x[i] += q.N[a] * z[3 * a + i];
-      g[0][i] += q.dN[0][a] * z[3 * a + i];
-      g[1][i] += q.dN[1][a] * z[3 * a + i];
-    }
-  S m[3];
-  cross3(g[0], g[1], m);
-  using std::sqrt;
-  const S jac = sqrt(dot3(m, m));
+  S x[3], m[3], jac;
+  sourcePoint<NF>(z, q, x, m, jac);
   S p[3], tu[3], tv[3];
   footOnFacet<NS>(x, z + 3 * NF, foot, p, tu, tv);
   S d[3];
   for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i];
-  const S r = sqrt(dot3(d, d));
-  Real dT;
-  const S T = tractionOf(law, r, dT);
-  // T rbar (rbar . n) da = T d (d . m) w / r^2; with dA: T d (d . m) dA / (|m| r^2)
-  const S s = referenceArea != nullptr ? S(T * dot3(d, m) * *referenceArea / (jac * r * r))
-                                       : S(T * dot3(d, m) * q.weight / (r * r));
-  for (int a = 0; a < NF; ++a)
-    for (int i = 0; i < 3; ++i) f[3 * a + i] = q.N[a] * s * d[i];
+  const S r = sourceForce<NF>(d, m, jac, q, law, referenceArea, f, st);
   rho = facetBlendDistance(d, r, tu, tv, foot.region, delta);
-  st.distance = scalarValue(r);
-  st.traction = scalarValue(T);
-  st.cosAlpha = scalarValue(dot3(d, m) / (r * jac));
   st.region = foot.region;
 }
 

@@ -101,27 +101,29 @@ inline S tractionOf(const Law& law, const S& r, Real& dT) {
   return out;
 }
 
-/// The residual f (3 NF entries) for a fixed projection region; also the
-/// state's distance, traction and cos(alpha). referenceArea: as in method3Pair3D.
-template <int NF, class S, class Law>
-inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const Law& law, S* f, PairState& st,
-                              const Real* referenceArea) {
-  S x[3] = {0.0, 0.0, 0.0}, g[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+/// The point x of quadrature point q on the source facet (the first NF nodes of z), its area
+/// normal m = g1 x g2 and |m|.
+template <int NF, class S>
+inline void sourcePoint(const S* z, const FacetPoint& q, S x[3], S m[3], S& jac) {
+  S g[2][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+  for (int i = 0; i < 3; ++i) x[i] = S(0.0);
   for (int a = 0; a < NF; ++a)
     for (int i = 0; i < 3; ++i) {
       x[i] += q.N[a] * z[3 * a + i];
       g[0][i] += q.dN[0][a] * z[3 * a + i];
       g[1][i] += q.dN[1][a] * z[3 * a + i];
     }
-  S m[3];
   cross3(g[0], g[1], m);
   using std::sqrt;
-  const S jac = sqrt(dot3(m, m));
-  const S* y = z + 3 * NF;
-  S p[3];
-  footInRegion(x, y, y + 3, y + 6, region, p);
-  S d[3];
-  for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i];
+  jac = sqrt(dot3(m, m));
+}
+
+/// f_a = N_a T(r) rbar (rbar . n) da (3 NF entries) of the point with d = x - p, area normal m and
+/// |m| = jac (sourcePoint); the state's distance, traction and cos(alpha). Returns r.
+template <int NF, class S, class Law>
+inline S sourceForce(const S* d, const S* m, const S& jac, const FacetPoint& q, const Law& law,
+                     const Real* referenceArea, S* f, PairState& st) {
+  using std::sqrt;
   const S r = sqrt(dot3(d, d));
   Real dT;
   const S T = tractionOf(law, r, dT);
@@ -133,6 +135,22 @@ inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const
   st.distance = scalarValue(r);
   st.traction = scalarValue(T);
   st.cosAlpha = scalarValue(dot3(d, m) / (r * jac));
+  return r;
+}
+
+/// The residual f (3 NF entries) for a fixed projection region; also the
+/// state's distance, traction and cos(alpha). referenceArea: as in method3Pair3D.
+template <int NF, class S, class Law>
+inline void method3Residual3D(const S* z, const FacetPoint& q, int region, const Law& law, S* f, PairState& st,
+                              const Real* referenceArea) {
+  S x[3], m[3], jac;
+  sourcePoint<NF>(z, q, x, m, jac);
+  const S* y = z + 3 * NF;
+  S p[3];
+  footInRegion(x, y, y + 3, y + 6, region, p);
+  S d[3];
+  for (int i = 0; i < 3; ++i) d[i] = x[i] - p[i];
+  sourceForce<NF>(d, m, jac, q, law, referenceArea, f, st);
   st.region = region;
 }
 
