@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The measured error table of Method 1's Gauss rule (VolumeInteraction.cpp, kQuadratureErrorTable).
+"""The measured error table of Method 1's Gauss rule (VolumeInteraction.cpp, kError2D12 .. kError3D6).
 
 Relative quadrature error of the repulsive (r^-12) and attractive (r^-6) parts of a cell pair's
 force: two aligned boxes of edge h (squares in 2D with the plane-strain line law, cubes in 3D)
@@ -13,7 +13,16 @@ a smaller h/g (so that the estimate grows with h/g and falls with n).
 
     /usr/bin/python3 tools/volume_quadrature_error.py
 """
+import math
 import numpy as np, sys
+
+def up3(v):
+    """v rounded up to three significant digits (the table is an upper bound)."""
+    if v <= 0.0:
+        return v
+    e = math.floor(math.log10(v)) - 2
+    return math.ceil(v / 10.0**e - 1e-9) * 10.0**e
+
 def gl(n):
     x, w = np.polynomial.legendre.leggauss(n); return 0.5*(x+1), 0.5*w
 def law(dim, d, p):
@@ -72,5 +81,5 @@ if __name__ == "__main__":
         n, m = M.shape
         env = np.array([[max(M[i:, :j + 1].max(), 1e-15) for j in range(m)] for i in range(n)])
         print(f"// dim {dim}, r^-{p}: measured")
-        for row in M: print("//   " + " ".join(f"{v:.1e}" for v in row))
-        print("{{" + ",\n ".join("{" + ", ".join(f"{v:.1e}" for v in row) + "}" for row in env) + "}},")
+        for row in M: print("//   " + " ".join(f"{v:.2e}" for v in row))
+        print("{{" + ",\n ".join("{" + ", ".join(f"{up3(v):.2e}" for v in row) + "}" for row in env) + "}},")
