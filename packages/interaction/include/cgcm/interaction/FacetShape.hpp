@@ -19,10 +19,6 @@ namespace cgcm::interaction {
 template <int N>
 inline constexpr int kFacetCorners = (N == 3 || N == 6) ? 3 : 4;
 
-/// Whether a facet with N nodes is curved (has mid-edge nodes).
-template <int N>
-inline constexpr bool kCurvedFacet = N > 4;
-
 /// Parameters (u, v) of node a of a facet with N nodes.
 template <int N>
 inline void facetNodeParameters(int a, Real& u, Real& v) {
