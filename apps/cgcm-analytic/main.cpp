@@ -3,11 +3,13 @@
 // stress, their pull-off points, the CGCM <-> M-D mapping, the fit of λ to
 // a computed CGCM load curve, and the numerical Lennard-Jones sphere
 // (ljsphere) whose pull-off force at a finite Tabor parameter is the
-// reference between them. Every subcommand writes CSV with a header line to
-// stdout or to --output FILE.
+// reference between them; beyond the sphere, the JKR and Maugis-Dugdale
+// cylinders, Kendall's peel and the flat punch. Every subcommand writes CSV
+// with a header line to stdout or to --output FILE.
 //
 // Exit codes: 0 success; 2 bad arguments or input (message on stderr naming
 // the option and the allowed values); 1 numerical failure.
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -23,10 +26,13 @@
 #include <vector>
 
 #include "cgcm/analytic/CgcmMapping.hpp"
+#include "cgcm/analytic/Cylinder.hpp"
+#include "cgcm/analytic/FlatPunch.hpp"
 #include "cgcm/analytic/LennardJonesSphere.hpp"
 #include "cgcm/analytic/LoadCurveFit.hpp"
 #include "cgcm/analytic/MaugisDugdale.hpp"
 #include "cgcm/analytic/Models.hpp"
+#include "cgcm/analytic/Peel.hpp"
 #include "cgcm/analytic/Pressure.hpp"
 #include "cgcm/analytic/PullOff.hpp"
 #include "cgcm/analytic/SubsurfaceStress.hpp"
@@ -345,6 +351,130 @@ void runPullOff(Args& args, std::ostream& out) {
       << "," << num(p.displacementControl.approach) << "\n";
 }
 
+/// Three material options that go together (all or none); nullopt when none.
+std::optional<std::array<Real, 3>> physicalFrom(const Args& args, const std::array<const char*, 3>& names) {
+  const int given = args.has(names[0]) + args.has(names[1]) + args.has(names[2]);
+  if (given == 0) return std::nullopt;
+  const std::string list = std::string("--") + names[0] + ", --" + names[1] + " and --" + names[2];
+  if (given != 3) throw UsageError("options " + list + " go together (all three are needed)");
+  std::array<Real, 3> v{};
+  for (int i = 0; i < 3; ++i) {
+    v[i] = args.real(names[i], 0, 1e300, std::string(names[i]) + " > 0");
+    if (v[i] <= 0) throw UsageError(std::string("option --") + names[i] + ": must be > 0");
+  }
+  return v;
+}
+
+void runCylinder(Args& args, std::ostream& out) {
+  const std::string name = args.text("model");
+  if (name != "hertz" && name != "jkr" && name != "md") {
+    throw UsageError("option --model: '" + name + "' is not a cylinder model (allowed: hertz, jkr, md;" +
+                     " the cylinder has no DMT limit with a finite force: use md with a small lambda)");
+  }
+  const bool md = name == "md";
+  Real lambda = 0;
+  if (args.has("lambda")) {
+    if (!md) throw UsageError("option --lambda applies only to --model md");
+    lambda = args.real("lambda", an::kLambdaMin, an::kLambdaMax, "1e-3 <= lambda <= 1e3");
+  } else if (md) {
+    throw UsageError("--model md needs --lambda (1e-3 <= lambda <= 1e3)");
+  }
+  const auto phys = physicalFrom(args, {"Estar", "w", "R"});
+  std::optional<an::CylinderScales> sc;
+  if (phys) sc = an::CylinderScales::from((*phys)[1], (*phys)[2], (*phys)[0]);
+  auto row = [&](const an::CylinderPoint& p) {
+    out << num(p.a) << "," << num(p.load) << "," << num(p.c);
+    if (sc) out << "," << num(p.a * sc->length) << "," << num(p.load * sc->force) << "," << num(p.c * sc->length);
+    out << "\n";
+  };
+  out << "a,P,c" << (sc ? ",a_phys,P_phys,c_phys" : "") << "\n";
+  if (args.has("pulloff")) {
+    for (const char* o : {"a-min", "a-max", "points"}) {
+      if (args.has(o)) throw UsageError(std::string("option --") + o + " does not apply with --pulloff");
+    }
+    if (name == "hertz") {
+      std::cerr << kProgram << " cylinder: hertz has no adhesion and no pull-off; the row reports P = 0 at a = 0\n";
+      row({0, 0, 0});
+    } else {
+      row(md ? an::mdCylinderPullOff(lambda) : an::jkrCylinderPullOff());
+    }
+    return;
+  }
+  const Real aMin = args.real("a-min", 1e-12, 1e6, "0 < a-min <= 1e6", 1e-3);
+  const Real aMax = args.real("a-max", 1e-12, 1e6, "0 < a-max <= 1e6", 3.0);
+  if (!(aMax > aMin)) throw UsageError("option --a-max must exceed --a-min");
+  const long n = args.integer("points", 2, 10000000, 300);
+  Real sGuess = -1;
+  for (long i = 0; i < n; ++i) {
+    const Real a = aMin + (aMax - aMin) * static_cast<Real>(i) / static_cast<Real>(n - 1);
+    if (md) {
+      const an::MdCylinderSolution sol = an::solveMdCylinder(lambda, a, sGuess);
+      sGuess = sol.s;
+      row({a, sol.load, sol.m * a});
+    } else if (name == "jkr") {
+      row(an::jkrCylinder(a));
+    } else {
+      row({a, 0.25 * cgcm::kPi * a * a, a});
+    }
+  }
+}
+
+void runPeel(Args& args, std::ostream& out) {
+  const Real eps = args.real("epsilon", 0, 1e300, "epsilon = w/(E_t h) >= 0");
+  std::vector<Real> angles;
+  if (args.has("theta")) {
+    for (const char* o : {"theta-min", "theta-max", "points"}) {
+      if (args.has(o)) throw UsageError(std::string("option --") + o + " does not apply with --theta");
+    }
+    angles.push_back(args.real("theta", 0, 180, "0 <= theta <= 180 (degrees)"));
+  } else {
+    const Real lo = args.real("theta-min", 0, 180, "0 <= theta-min <= 180 (degrees)", 0.0);
+    const Real hi = args.real("theta-max", 0, 180, "0 <= theta-max <= 180 (degrees)", 180.0);
+    if (!(hi > lo)) throw UsageError("option --theta-max must exceed --theta-min");
+    const long n = args.integer("points", 2, 10000000, 181);
+    for (long i = 0; i < n; ++i) angles.push_back(lo + (hi - lo) * static_cast<Real>(i) / static_cast<Real>(n - 1));
+  }
+  if (eps == 0 && angles.front() == 0) {
+    throw UsageError("theta = 0 needs --epsilon > 0 (an inextensible strip cannot be peeled at 0 degrees)");
+  }
+  out << "theta_deg,F_over_bw,inextensible_F_over_bw\n";
+  for (Real deg : angles) {
+    const Real theta = deg * cgcm::kPi / 180;
+    const Real inext = deg > 0 ? an::inextensiblePeelForce(theta) : std::numeric_limits<Real>::infinity();
+    out << num(deg) << "," << num(an::kendallPeelForce(theta, eps)) << "," << num(inext) << "\n";
+  }
+}
+
+void runPunch(Args& args, std::ostream& out) {
+  an::PunchGeometry geometry;
+  const std::string g = args.text("geometry");
+  try {
+    geometry = an::parsePunchGeometry(g);
+  } catch (const cgcm::InputError&) {
+    throw UsageError("option --geometry: unknown geometry '" + g + "' (allowed: axisymmetric, strip)");
+  }
+  const Real lo = args.real("a-min", 1e-12, 1e12, "0 < a-min <= 1e12 (multiples of a_cr)", 1e-2);
+  const Real hi = args.real("a-max", 1e-12, 1e12, "0 < a-max <= 1e12 (multiples of a_cr)", 1e2);
+  if (!(hi > lo)) throw UsageError("option --a-max must exceed --a-min");
+  const long n = args.integer("points", 2, 10000000, 41);
+  const auto phys = physicalFrom(args, {"Estar", "w", "sigma-max"});
+  std::optional<an::FlatPunch> punch;
+  if (phys) {
+    punch.emplace(geometry, (*phys)[0], (*phys)[1], (*phys)[2]);
+    std::cerr << kProgram << " punch: critical size a_cr = " << num(punch->criticalSize()) << "\n";
+  }
+  out << "a_over_acr,kendall_over_strength" << (punch ? ",a,F_kendall,F_strength" : "") << "\n";
+  for (long i = 0; i < n; ++i) {
+    const Real x = lo * std::pow(hi / lo, static_cast<Real>(i) / static_cast<Real>(n - 1));
+    out << num(x) << "," << num(1 / std::sqrt(x));
+    if (punch) {
+      const Real a = x * punch->criticalSize();
+      out << "," << num(a) << "," << num(punch->kendallForce(a)) << "," << num(punch->strengthForce(a));
+    }
+    out << "\n";
+  }
+}
+
 void runMap(Args& args, std::ostream& out) {
   const an::CgcmMapping m = *mappingFrom(args, true);
   out << "gammaL,gammaW,nu,f_w,f_E,f_F,f_a,f_delta,f_sigma,w,sigma_max,lambda_theory,mu_tabor\n";
@@ -533,6 +663,76 @@ std::vector<Command> commands() {
        join({kCommonOptions, {{"mu", true, ""}, {"rings", true, ""}, {"delta-start", true, ""},
                               {"pulloff", false, ""}}}),
        runLjSphere},
+      {"cylinder",
+       "Cylinder on a half-space in plane strain, per unit length: columns a, P, c.",
+       "options:\n"
+       "  --model M        hertz, jkr or md (required)\n"
+       "  --lambda L       Maugis-Dugdale parameter of the cylinder,\n"
+       "                   lambda = 2 sigma0 (R/(pi w E*^2))^(1/3); required for md and\n"
+       "                   only for md; 1e-3 <= L <= 1e3\n"
+       "  --a-min A        smallest half-width (default 1e-3)\n"
+       "  --a-max A        largest half-width (default 3)\n"
+       "  --points N       number of half-widths, evenly spaced (default 300)\n"
+       "  --pulloff        write only the load-control pull-off point\n"
+       "  --Estar E --w W --R R\n"
+       "                   optional, all three or none: the plane-strain combined modulus,\n"
+       "                   the work of adhesion and the radius; adds the columns a_phys,\n"
+       "                   P_phys (per unit length) and c_phys\n" +
+           kCommonHelp +
+           "\nNormalised by a = a_bar (pi w R^2/E*)^(1/3), P = P_bar (pi^2 w^2 E* R)^(1/3):\n"
+           "Hertz P_bar = pi a^2/4; JKR (Barquins 1988) P_bar = pi a^2/4 - sqrt(2a), pull-off\n"
+           "-3/(16 pi)^(1/3) = -0.81289, i.e. P_c/L = -3 (pi E* w^2 R/16)^(1/3); Maugis-Dugdale\n"
+           "(Baney & Hui 1997) P_bar = pi a^2/4 - lambda a sqrt(m^2 - 1) with m = c/a from the\n"
+           "gap equation (doc/analytic-models.md). c is the outer half-width of the loaded\n"
+           "zone (= a except for md). Plane strain has no approach, hence no displacement-\n"
+           "control pull-off.\n"
+           "\nexample: cgcm-analytic cylinder --model md --lambda 1 --pulloff\n",
+       join({kCommonOptions, {{"model", true, ""}, {"lambda", true, ""}, {"a-min", true, ""},
+                              {"a-max", true, ""}, {"points", true, ""}, {"pulloff", false, ""},
+                              {"Estar", true, ""}, {"w", true, ""}, {"R", true, ""}}}),
+       runCylinder},
+      {"peel",
+       "Kendall's steady peel force against the angle: columns theta_deg, F_over_bw,\n"
+       "inextensible_F_over_bw.",
+       "options:\n"
+       "  --epsilon X      w/(E_t h) >= 0 (required): work of adhesion over the strip's\n"
+       "                   tension modulus times its thickness; E_t = E/(1 - nu^2) in plane\n"
+       "                   strain (a wide strip), E for a narrow one\n"
+       "  --theta-min D    smallest peel angle in degrees (default 0)\n"
+       "  --theta-max D    largest peel angle in degrees (default 180)\n"
+       "  --points N       number of angles, evenly spaced (default 181)\n"
+       "  --theta D        a single angle instead of the range\n" +
+           kCommonHelp +
+           "\nKendall (1975): (F/b)^2/(2 E_t h) + (F/b)(1 - cos theta) - w = 0, written\n"
+           "F/(b w) = 2/[(1 - cos theta) + sqrt((1 - cos theta)^2 + 2 epsilon)]; the\n"
+           "inextensible limit is 1/(1 - cos theta) (inf at 0 degrees).\n"
+           "\nexample: cgcm-analytic peel --epsilon 1e-3 --theta 90\n",
+       join({kCommonOptions, {{"epsilon", true, ""}, {"theta-min", true, ""}, {"theta-max", true, ""},
+                              {"points", true, ""}, {"theta", true, ""}}}),
+       runPeel},
+      {"punch",
+       "Flat-punch pull-off: Kendall's force against the strength limit over the punch\n"
+       "size: columns a_over_acr, kendall_over_strength.",
+       "options:\n"
+       "  --geometry G     axisymmetric (radius a) or strip (half-width a, plane strain,\n"
+       "                   per unit length) (required)\n"
+       "  --a-min X        smallest size in multiples of the critical size (default 1e-2)\n"
+       "  --a-max X        largest size in multiples of the critical size (default 1e2)\n"
+       "  --points N       number of sizes, logarithmically spaced (default 41)\n"
+       "  --Estar E --w W --sigma-max S\n"
+       "                   optional, all three or none: the half-space's E/(1 - nu^2), the\n"
+       "                   work of adhesion and the interface strength; adds the columns a,\n"
+       "                   F_kendall and F_strength, and prints a_cr on stderr\n" +
+           kCommonHelp +
+           "\nAxisymmetric: F_kendall = sqrt(8 pi a^3 E* w) (Kendall 1971), F_strength =\n"
+           "pi a^2 sigma_max, a_cr = 8 E* w/(pi sigma_max^2). Strip: F_kendall =\n"
+           "sqrt(2 pi a E* w), F_strength = 2 a sigma_max, a_cr = pi E* w/(2 sigma_max^2).\n"
+           "In both, F_kendall/F_strength = sqrt(a_cr/a) (Gao & Yao 2004).\n"
+           "\nexample: cgcm-analytic punch --geometry axisymmetric --Estar 1 --w 1e-3 --sigma-max 0.02\n",
+       join({kCommonOptions, {{"geometry", true, ""}, {"a-min", true, ""}, {"a-max", true, ""},
+                              {"points", true, ""}, {"Estar", true, ""}, {"w", true, ""},
+                              {"sigma-max", true, ""}}}),
+       runPunch},
   };
 }
 
@@ -541,8 +741,10 @@ std::string globalUsage(const std::vector<Command>& cmds) {
   out << "usage: " << kProgram << " <command> [options]\n\n"
       << "Closed-form adhesive contact of a sphere on a half-space (Hertz, JKR, DMT,\n"
       << "Maugis-Dugdale) in the Johnson-Greenwood normalisation, their mapping to the\n"
-      << "CGCM, and the Lennard-Jones sphere at a Tabor parameter mu (ljsphere). Each\n"
-      << "command writes CSV with a header to stdout (or --output FILE).\n\n"
+      << "CGCM, and the Lennard-Jones sphere at a Tabor parameter mu (ljsphere); beyond\n"
+      << "the sphere, the JKR and Maugis-Dugdale cylinders (cylinder), Kendall's peel\n"
+      << "(peel) and the flat punch (punch). Each command writes CSV with a header to\n"
+      << "stdout (or --output FILE).\n\n"
       << "commands:\n";
   for (const auto& c : cmds) {
     std::string first = c.summary.substr(0, c.summary.find('\n'));
