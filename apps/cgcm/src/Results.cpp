@@ -45,13 +45,14 @@ Real vonMises(const Mat3& s) {
 template <class Kernel>
 bool cellStress(const mesh::Mesh& m, const LocalIndex* nodes, const std::vector<Real>& u,
                 const material::NeoHookean& mat, Mat3& sigma, Real& J) {
-  Real X[Kernel::numNodes][Kernel::dim], x[Kernel::numNodes][Kernel::dim];
+  Real X[Kernel::numNodes][Kernel::dim], ue[Kernel::numNodes][Kernel::dim], x[Kernel::numNodes][Kernel::dim];
   for (int a = 0; a < Kernel::numNodes; ++a)
     for (int i = 0; i < Kernel::dim; ++i) {
       X[a][i] = m.coord(nodes[a], i);
-      x[a][i] = X[a][i] + u[std::size_t(nodes[a]) * Kernel::dim + i];
+      ue[a][i] = u[std::size_t(nodes[a]) * Kernel::dim + i];
+      x[a][i] = X[a][i] + ue[a][i];
     }
-  return Kernel::averageStress(X, x, mat, sigma, J);
+  return Kernel::averageStress(X, x, ue, mat, sigma, J);
 }
 
 }  // namespace

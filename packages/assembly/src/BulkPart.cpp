@@ -20,14 +20,16 @@ struct BlockFailures {
   LocalIndex first = 0;  ///< the lowest failed cell of the block, if count > 0
 };
 
-// Reference and current coordinates of cell c.
+// Reference coordinates, displacements and current coordinates of cell c.
 template <int nn, int dim>
 KOKKOS_INLINE_FUNCTION void gatherCell(const LocalIndex c, const DofView& dofLids, const CoordView& Xref,
-                                       const BulkPart::ConstVectorView& u, Real (&X)[nn][dim], Real (&x)[nn][dim]) {
+                                       const BulkPart::ConstVectorView& u, Real (&X)[nn][dim], Real (&ue)[nn][dim],
+                                       Real (&x)[nn][dim]) {
   for (int a = 0; a < nn; ++a)
     for (int i = 0; i < dim; ++i) {
       X[a][i] = Xref(c, a, i);
-      x[a][i] = X[a][i] + u(dofLids(c, a * dim + i), 0);
+      ue[a][i] = u(dofLids(c, a * dim + i), 0);
+      x[a][i] = X[a][i] + ue[a][i];
     }
 }
 
@@ -45,20 +47,20 @@ BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, cons
   Kokkos::parallel_reduce(
       "cgcm::assembleBlock", Kokkos::RangePolicy<ExecSpace>(0, numCells),
       [=](const LocalIndex c, int& failed) {
-        Real X[nn][dim], x[nn][dim];
-        gatherCell(c, dofLids, Xref, u, X, x);
+        Real X[nn][dim], ue[nn][dim], x[nn][dim];
+        gatherCell(c, dofLids, Xref, u, X, ue, x);
         Real fe[nd];
         bool ok;
         if (withTangent) {
           Real ke[nd][nd];
-          ok = Kernel::residualAndTangent(X, x, mat, fe, ke);
+          ok = Kernel::residualAndTangent(X, x, ue, mat, fe, ke);
           if (ok) {
             LocalIndex cols[nd];
             for (int k = 0; k < nd; ++k) cols[k] = colLids(c, k);
             for (int r = 0; r < nd; ++r) K.sumIntoValues(dofLids(c, r), cols, nd, ke[r], sortedRows, true);
           }
         } else {
-          ok = Kernel::residual(X, x, mat, fe);
+          ok = Kernel::residual(X, x, ue, mat, fe);
         }
         if (!ok) {
           ++failed;
@@ -73,9 +75,9 @@ BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, cons
   Kokkos::parallel_reduce(
       "cgcm::firstInvertedCell", Kokkos::RangePolicy<ExecSpace>(0, numCells),
       [=](const LocalIndex c, LocalIndex& lowest) {
-        Real X[nn][dim], x[nn][dim], fe[nd];
-        gatherCell(c, dofLids, Xref, u, X, x);
-        if (!Kernel::residual(X, x, mat, fe) && c < lowest) lowest = c;
+        Real X[nn][dim], ue[nn][dim], x[nn][dim], fe[nd];
+        gatherCell(c, dofLids, Xref, u, X, ue, x);
+        if (!Kernel::residual(X, x, ue, mat, fe) && c < lowest) lowest = c;
       },
       Kokkos::Min<LocalIndex>(first));
   return {failures, first};

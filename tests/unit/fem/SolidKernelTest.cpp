@@ -511,6 +511,49 @@ TYPED_TEST(SolidKernelTest, RigidMotionGivesZeroResidual) {
   }
 }
 
+// (3b) Precision near F = I: the stress comes from the displacement gradient,
+// not from x − X, so a translation of a very stiff element far from the origin
+// gives exactly zero force, and a tiny strain on top of it gives the force of
+// the same strain without the translation (whose rounding would otherwise be
+// eps·|x|/h·Y: here 1e-7 of Y = 1e9 against a stress of order 1).
+TYPED_TEST(SolidKernelTest, StiffElementKeepsItsPrecisionUnderTranslation) {
+  using K = TypeParam;
+  std::mt19937 rng(909);
+  for (bool small : {false, true}) {
+    NeoHookean mat = NeoHookean::fromYoungPoisson(1e9, 0.3);
+    if (small) mat.kinematics = cgcm::material::Kinematics::SmallStrain;
+    Real X[K::numNodes][K::dim], x[K::numNodes][K::dim], u[K::numNodes][K::dim];
+    Real x0[K::numNodes][K::dim], u0[K::numNodes][K::dim], f[K::numDofs], f0[K::numDofs];
+    randomElement<K>(rng, 0.15, X);
+    for (auto& node : X) node[0] += 100.0;  // far from the origin (the axis, in axisymmetry)
+    const Real t[3] = {isAxisymmetric<K>() ? 0.0 : 0.0317, -0.0213, 0.011};
+    for (int a = 0; a < K::numNodes; ++a)
+      for (int i = 0; i < K::dim; ++i) {
+        u[a][i] = t[i];
+        x[a][i] = X[a][i] + u[a][i];
+      }
+    ASSERT_TRUE(K::residual(X, x, u, mat, f));
+    EXPECT_EQ(maxAbsVec<K>(f), 0.0) << (small ? "small strain" : "finite strain");
+    // u = t + ε A X with ε = 1e-9: σ is of order Y ε = 1.
+    const Real A[3][3] = {{0.3, -0.2, 0.1}, {0.5, 0.7, -0.4}, {0.2, 0.1, -0.6}};
+    for (int a = 0; a < K::numNodes; ++a)
+      for (int i = 0; i < K::dim; ++i) {
+        Real s = 0.0;
+        for (int j = 0; j < K::dim; ++j) s += 1e-9 * A[i][j] * X[a][j];
+        u0[a][i] = s;
+        x0[a][i] = X[a][i] + s;
+        u[a][i] = t[i] + s;
+        x[a][i] = X[a][i] + u[a][i];
+      }
+    ASSERT_TRUE(K::residual(X, x, u, mat, f));
+    ASSERT_TRUE(K::residual(X, x0, u0, mat, f0));
+    Real err = 0.0;
+    for (int d = 0; d < K::numDofs; ++d) err = std::max(err, std::abs(f[d] - f0[d]));
+    EXPECT_LE(err, 1e-9 * maxAbsVec<K>(f0)) << (small ? "small strain" : "finite strain");
+    EXPECT_GT(maxAbsVec<K>(f0), 1e-3);  // the strain really loads the element
+  }
+}
+
 // (4) Patch test: a homogeneous deformation of a distorted patch gives zero
 // force at the interior nodes. The patch is 2 × 2 (× 2) cells (48 tetrahedra)
 // sharing their nodes, its centre vertex moved; the quadratic cube cells are

@@ -220,6 +220,33 @@ TEST(NeoHookean, ClosedFormStressForBothLaws) {
               tol);
 }
 
+// The stress from the displacement gradient H = F − I is cauchy(F Fᵀ, det F)
+// for any H, and keeps its relative precision as H → 0, where cauchy() is
+// left with the rounding of b − I and ln J (about eps·μ).
+TEST(NeoHookean, StressOfDisplacementGradientIsPreciseNearIdentity) {
+  std::mt19937 rng(77);
+  for (VolumetricLaw law : {VolumetricLaw::LogSquared, VolumetricLaw::QuadraticJ}) {
+    const NeoHookean m = NeoHookean::fromYoungPoisson(2.0, 0.3, law);
+    for (int trial = 0; trial < 20; ++trial) {
+      const Mat3 F = randomF(rng, 0.3);
+      Mat3 H = F;
+      for (int i = 0; i < 3; ++i) H.a[i][i] -= 1.0;
+      const Mat3 a = m.cauchyOfDisplacementGradient(H);
+      const Mat3 b = m.cauchy(leftCauchyGreen(F), cgcm::det(F));
+      EXPECT_LE(maxAbs(a - b), 1e-13 * (1 + maxAbs(b)));
+      EXPECT_NEAR(NeoHookean::detOfIdentityPlusMinusOne(H), cgcm::det(F) - 1.0, 1e-14);
+    }
+    // H = 1e-12 A: σ = Λ tr(H) I + μ(H + Hᵀ) to first order, i.e. relative
+    // 1e-12; the result must hold 1e-9 of it (cauchy() holds about 1e-4).
+    const Mat3 A = randomMat(rng);
+    Mat3 H;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) H.a[i][j] = 1e-12 * A.a[i][j];
+    const Mat3 linear = m.linearStressOfDisplacementGradient(H);
+    EXPECT_LE(maxAbs(m.cauchyOfDisplacementGradient(H) - linear), 1e-9 * maxAbs(linear));
+  }
+}
+
 TEST(NeoHookean, InvalidParametersThrowInputError) {
   auto expectThrowNaming = [](auto&& call, const std::string& name) {
     try {

@@ -25,6 +25,13 @@
 // linear stress σ = c : ε and c = (Λ, μ); the geometric term G_ai : (G_bk σ)
 // is absent, so K is constant.
 //
+// Precision. Each kernel takes the nodal displacements u beside the current
+// coordinates x = X + u (the forms without u take u = x − X). The stress is
+// formed from the displacement gradient H = ∂u/∂X (F = I + H), not from
+// x − X: near F = I its rounding is then relative to σ, not to the modulus,
+// so a body 1e6 times stiffer than its neighbour keeps a residual floor far
+// below the force tolerance (doc/theory.md, "Stiffness contrast").
+//
 // The kernels return false, leaving their outputs unspecified, when the
 // reference or current element Jacobian determinant, J = det F or (in
 // axisymmetry) the reference or current radius is <= 0 at a quadrature point.
@@ -60,7 +67,8 @@ struct SolidKernel {
     Real N[numNodes];        ///< shape functions
     Real g[numNodes][dim];   ///< gradients ∂N_a/∂x (∂N_a/∂X on the reference; filled only when requested)
     Real invR;               ///< 1/r (1/R on the reference) at the point (axisymmetric), else 0
-    Mat3 F;                  ///< deformation gradient (3×3; F₃₃ = 1 or r/R in 2D)
+    Mat3 H;                  ///< displacement gradient ∂u/∂X (3×3; H₃₃ = 0 or u_r/R in 2D)
+    Mat3 F;                  ///< deformation gradient I + H
     Real J;                  ///< det F
     Real dv;                 ///< current volume weight of the point (reference on the reference)
     Real dV;                 ///< reference volume weight of the point
@@ -72,49 +80,53 @@ struct SolidKernel {
   /// Returns false for a degenerate or inverted point.
   template <bool withGradients>
   KOKKOS_INLINE_FUNCTION static bool kinematics(int q, const Coordinates& X, const Coordinates& x,
-                                                PointKinematics& k, bool onReference = false) {
+                                                const Coordinates& u, PointKinematics& k,
+                                                bool onReference = false) {
     Real dN[numNodes][dim];
     Real w;
     Element::shapeAtQp(q, k.N, dN, w);
 
-    // Reference and current Jacobians ∂X/∂ξ, ∂x/∂ξ.
+    // Reference and current Jacobians ∂X/∂ξ, ∂x/∂ξ, and ∂u/∂ξ.
     Mat<dim> JX = Mat<dim>::zero();
     Mat<dim> Jx = Mat<dim>::zero();
+    Mat<dim> Ju = Mat<dim>::zero();
     for (int a = 0; a < numNodes; ++a)
       for (int i = 0; i < dim; ++i)
         for (int j = 0; j < dim; ++j) {
           JX.a[i][j] += X[a][i] * dN[a][j];
           Jx.a[i][j] += x[a][i] * dN[a][j];
+          Ju.a[i][j] += u[a][i] * dN[a][j];
         }
     const Real detJX = det(JX);
     const Real detJx = det(Jx);
     if (!(detJX > 0.0) || !(detJx > 0.0)) return false;
 
-    // In-plane (or full 3D) deformation gradient F = Jx JX⁻¹.
-    const Mat<dim> Fd = Jx * inverse(JX, detJX);
-    k.F = Mat3::zero();
+    // In-plane (or full 3D) displacement gradient H = Ju JX⁻¹, F = I + H.
+    const Mat<dim> Hd = Ju * inverse(JX, detJX);
+    k.H = Mat3::zero();
     for (int i = 0; i < dim; ++i)
-      for (int j = 0; j < dim; ++j) k.F.a[i][j] = Fd.a[i][j];
+      for (int j = 0; j < dim; ++j) k.H.a[i][j] = Hd.a[i][j];
 
     if constexpr (axisymmetric) {
-      Real R = 0.0, r = 0.0;
+      Real R = 0.0, r = 0.0, ur = 0.0;
       for (int a = 0; a < numNodes; ++a) {
         R += k.N[a] * X[a][0];
         r += k.N[a] * x[a][0];
+        ur += k.N[a] * u[a][0];
       }
       if (!(R > 0.0) || !(r > 0.0)) return false;
-      k.F.a[2][2] = r / R;
+      k.H.a[2][2] = ur / R;  // F₃₃ − 1 = (r − R)/R
       k.invR = 1.0 / r;
       k.dV = Formulation::ringFactor * R * detJX * w;
       k.dv = Formulation::ringFactor * r * detJx * w;
-      k.J = (detJx / detJX) * (r / R);
     } else {
-      if constexpr (dim == 2) k.F.a[2][2] = 1.0;
       k.invR = 0.0;
       k.dV = detJX * w;
       k.dv = detJx * w;
-      k.J = detJx / detJX;
     }
+    k.F = k.H;
+    for (int i = 0; i < 3; ++i) k.F.a[i][i] += 1.0;
+    k.J = 1.0 + material::NeoHookean::detOfIdentityPlusMinusOne(k.H);
     if (!(k.J > 0.0)) return false;
     if (onReference) {
       k.dv = k.dV;
@@ -134,33 +146,34 @@ struct SolidKernel {
     return true;
   }
 
-  /// b = F Fᵀ.
-  KOKKOS_INLINE_FUNCTION static Mat3 leftCauchyGreen(const Mat3& F) {
-    Mat3 b;
-    for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j) {
-        Real s = 0.0;
-        for (int m = 0; m < 3; ++m) s += F.a[i][m] * F.a[j][m];
-        b.a[i][j] = s;
-        b.a[j][i] = s;
-      }
-    return b;
+  /// σ at the point from the displacement gradient: Neo-Hookean Cauchy
+  /// stress, or the small-strain stress.
+  KOKKOS_INLINE_FUNCTION static Mat3 stress(const material::NeoHookean& mat, const PointKinematics& k) {
+    if (mat.kinematics == material::Kinematics::SmallStrain) return mat.linearStressOfDisplacementGradient(k.H);
+    return mat.cauchyOfDisplacementGradient(k.H);
   }
 
-  /// σ at the point: Neo-Hookean Cauchy stress, or the small-strain stress.
-  KOKKOS_INLINE_FUNCTION static Mat3 stress(const material::NeoHookean& mat, const PointKinematics& k) {
-    if (mat.kinematics == material::Kinematics::SmallStrain) return mat.linearStress(k.F);
-    return mat.cauchy(leftCauchyGreen(k.F), k.J);
+  /// u = x − X, for the forms that take only X and x.
+  KOKKOS_INLINE_FUNCTION static void displacementOf(const Coordinates& X, const Coordinates& x, Coordinates& u) {
+    for (int a = 0; a < numNodes; ++a)
+      for (int i = 0; i < dim; ++i) u[a][i] = x[a][i] - X[a][i];
+  }
+
+  KOKKOS_INLINE_FUNCTION static bool residual(const Coordinates& X, const Coordinates& x,
+                                              const material::NeoHookean& mat, Vector& f) {
+    Coordinates u;
+    displacementOf(X, x, u);
+    return residual(X, x, u, mat, f);
   }
 
   /// Internal force f = ∫ B_ULᵀ σ dv.
-  KOKKOS_INLINE_FUNCTION static bool residual(const Coordinates& X, const Coordinates& x,
+  KOKKOS_INLINE_FUNCTION static bool residual(const Coordinates& X, const Coordinates& x, const Coordinates& u,
                                               const material::NeoHookean& mat, Vector& f) {
     for (int d = 0; d < numDofs; ++d) f[d] = 0.0;
     const bool small = mat.kinematics == material::Kinematics::SmallStrain;
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
-      if (!kinematics<true>(q, X, x, k, small)) return false;
+      if (!kinematics<true>(q, X, x, u, k, small)) return false;
       const Mat3 sigma = stress(mat, k);
       for (int a = 0; a < numNodes; ++a) {
         for (int i = 0; i < dim; ++i) {
@@ -174,10 +187,18 @@ struct SolidKernel {
     return true;
   }
 
-  /// Internal force and its consistent (material + geometric) tangent K = ∂f/∂x.
   KOKKOS_INLINE_FUNCTION static bool residualAndTangent(const Coordinates& X, const Coordinates& x,
                                                         const material::NeoHookean& mat, Vector& f,
                                                         Matrix& K) {
+    Coordinates u;
+    displacementOf(X, x, u);
+    return residualAndTangent(X, x, u, mat, f, K);
+  }
+
+  /// Internal force and its consistent (material + geometric) tangent K = ∂f/∂x.
+  KOKKOS_INLINE_FUNCTION static bool residualAndTangent(const Coordinates& X, const Coordinates& x,
+                                                        const Coordinates& u, const material::NeoHookean& mat,
+                                                        Vector& f, Matrix& K) {
     for (int d = 0; d < numDofs; ++d) f[d] = 0.0;
     for (int d = 0; d < numDofs; ++d)
       for (int e = 0; e < numDofs; ++e) K[d][e] = 0.0;
@@ -186,7 +207,7 @@ struct SolidKernel {
     const Real geometric = small ? 0.0 : 1.0;  // the geometric (initial-stress) term's weight
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
-      if (!kinematics<true>(q, X, x, k, small)) return false;
+      if (!kinematics<true>(q, X, x, u, k, small)) return false;
       const Mat3 sigma = stress(mat, k);
       const material::IsotropicModuli c =
           small ? material::IsotropicModuli{mat.lambda, mat.mu} : mat.spatialModuli(k.J);
@@ -249,23 +270,32 @@ struct SolidKernel {
   /// residual() is its derivative with respect to x.
   KOKKOS_INLINE_FUNCTION static bool energy(const Coordinates& X, const Coordinates& x,
                                             const material::NeoHookean& mat, Real& W) {
+    Coordinates u;
+    displacementOf(X, x, u);
     W = 0.0;
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
-      if (!kinematics<false>(q, X, x, k)) return false;
+      if (!kinematics<false>(q, X, x, u, k)) return false;
       W += (mat.kinematics == material::Kinematics::SmallStrain ? mat.linearEnergy(k.F) : mat.energy(k.F)) * k.dV;
     }
     return true;
   }
 
-  /// Cauchy stress and J, each the plain mean over the element's quadrature points (for output).
   KOKKOS_INLINE_FUNCTION static bool averageStress(const Coordinates& X, const Coordinates& x,
+                                                   const material::NeoHookean& mat, Mat3& sigma, Real& J) {
+    Coordinates u;
+    displacementOf(X, x, u);
+    return averageStress(X, x, u, mat, sigma, J);
+  }
+
+  /// Cauchy stress and J, each the plain mean over the element's quadrature points (for output).
+  KOKKOS_INLINE_FUNCTION static bool averageStress(const Coordinates& X, const Coordinates& x, const Coordinates& u,
                                                    const material::NeoHookean& mat, Mat3& sigma, Real& J) {
     sigma = Mat3::zero();
     J = 0.0;
     for (int q = 0; q < numQp; ++q) {
       PointKinematics k;
-      if (!kinematics<false>(q, X, x, k)) return false;
+      if (!kinematics<false>(q, X, x, u, k)) return false;
       const Mat3 s = stress(mat, k);
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) sigma.a[i][j] += s.a[i][j];

@@ -165,6 +165,50 @@ struct NeoHookean {
     return s;
   }
 
+  /// det(I + H) − 1 = I₁(H) + I₂(H) + I₃(H) for the displacement gradient
+  /// H = F − I: J − 1 without forming J, so that it keeps its relative
+  /// precision when F is close to I.
+  KOKKOS_INLINE_FUNCTION static Real detOfIdentityPlusMinusOne(const Mat3& H) {
+    const Real i1 = H.a[0][0] + H.a[1][1] + H.a[2][2];
+    const Real i2 = H.a[0][0] * H.a[1][1] - H.a[0][1] * H.a[1][0] + H.a[1][1] * H.a[2][2] -
+                    H.a[1][2] * H.a[2][1] + H.a[0][0] * H.a[2][2] - H.a[0][2] * H.a[2][0];
+    return i1 + i2 + det(H);
+  }
+
+  /// Cauchy stress from the displacement gradient H = F − I, with
+  /// b − I = H + Hᵀ + H Hᵀ and ln J = log1p(J − 1) formed without
+  /// subtracting 1 from quantities near 1. Equal to cauchy(F Fᵀ, det F) in
+  /// exact arithmetic; near F = I its rounding error is relative to σ, not
+  /// to the modulus (cauchy()'s floor is about eps·μ), which is what lets a
+  /// stiff body meet an absolute force tolerance next to a soft one.
+  KOKKOS_INLINE_FUNCTION Mat3 cauchyOfDisplacementGradient(const Mat3& H) const {
+    const Real Jm1 = detOfIdentityPlusMinusOne(H);
+    const Real invJ = 1.0 / (1.0 + Jm1);
+    const Real p = law == VolumetricLaw::LogSquared ? lambda * std::log1p(Jm1) : 0.5 * lambda * Jm1 * (2.0 + Jm1);
+    const Real muJ = mu * invJ;
+    Mat3 s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j) {
+        Real hh = 0.0;
+        for (int m = 0; m < 3; ++m) hh += H.a[i][m] * H.a[j][m];
+        s.a[i][j] = muJ * (H.a[i][j] + H.a[j][i] + hh);
+        s.a[j][i] = s.a[i][j];
+      }
+    const Real diag = p * invJ;
+    for (int i = 0; i < 3; ++i) s.a[i][i] += diag;
+    return s;
+  }
+
+  /// Small-strain stress from the displacement gradient: ε = sym(H).
+  KOKKOS_INLINE_FUNCTION Mat3 linearStressOfDisplacementGradient(const Mat3& H) const {
+    const Real trEps = H.a[0][0] + H.a[1][1] + H.a[2][2];
+    Mat3 s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) s.a[i][j] = mu * (H.a[i][j] + H.a[j][i]);
+    for (int i = 0; i < 3; ++i) s.a[i][i] += lambda * trEps;
+    return s;
+  }
+
   /// Small-strain stress σ = Λ tr(ε) I + 2μ ε, ε = sym(F) − I: the
   /// linearisation of cauchy() about F = I.
   KOKKOS_INLINE_FUNCTION Mat3 linearStress(const Mat3& F) const {
