@@ -200,7 +200,12 @@ void logStart(std::ostream& log, const solver::ProblemSetup& setup, const solver
       << " cells, " << numDofs << " dofs, " << ranks << " rank(s); " << plan.follower().name() << " control\n";
   for (const auto& line : setup.report) log << "cgcm: " << line << "\n";
   log << "cgcm: a state is accepted when |f|_2 <= " << newton.tolerance() << " (Residual Tolerance "
-      << newton.residualTolerance << " x F_ref " << setup.forceScale << ")\n";
+      << newton.residualTolerance << " x F_ref " << setup.forceScale << ")";
+  const Real Y = setup.material.youngsModulus();
+  if (std::any_of(setup.bodyMaterials.begin(), setup.bodyMaterials.end(),
+                  [&](const material::NeoHookean& m) { return m.youngsModulus() > Y; }))
+    log << "; the residual of a body stiffer than Material's Young's modulus Y counts divided by Y_body/Y";
+  log << "\n";
 }
 
 // The initial guess: the prescribed motion of whole bodies at the first u (a

@@ -282,6 +282,29 @@ Real Problem::nodeValue(const Vector& v, LocalIndex node, int component) const {
   return sumOverNodes(v, {node}, component);
 }
 
+Teuchos::RCP<Vector> Problem::residualWeights(Real referenceModulus) const {
+  std::vector<Real> scale(bulk_.size());
+  bool stiffer = false;
+  for (std::size_t b = 0; b < bulk_.size(); ++b) {
+    scale[b] = std::max(1.0, bulk_[b].material().youngsModulus() / referenceModulus);
+    stiffer = stiffer || scale[b] > 1.0;
+  }
+  if (!stiffer) return Teuchos::null;
+  auto weights = Teuchos::rcp(new Vector(dofs_->ownedMap()));
+  weights->putScalar(1.0);
+  auto w = weights->getLocalViewHost(Tpetra::Access::ReadWrite);
+  const Map& owned = *dofs_->ownedMap();
+  for (const auto& block : mesh_->blocks) {
+    const Real s = scale[std::size_t(block.body)];
+    if (s == 1.0) continue;
+    for (LocalIndex n : block.connectivity) {
+      if (!dofs_->ownsNode(n)) continue;
+      for (int i = 0; i < dim_; ++i) w(owned.getLocalElement(dofs_->dof(n, i)), 0) = 1.0 / (s * s);
+    }
+  }
+  return weights;
+}
+
 Real Problem::sumOverNodes(const Vector& f, const std::vector<LocalIndex>& nodes, int component) const {
   auto fv = f.getLocalViewHost(Tpetra::Access::ReadOnly);
   const Map& owned = *dofs_->ownedMap();

@@ -95,7 +95,7 @@ class PathStepper : public LOCA::Stepper {
       return LOCA::Stepper::postprocess(stepStatus);
     }
     const int iterations = solverPtr->getNumIterations();
-    const Real residual = residualNorm(solverPtr->getSolutionGroup());
+    const Real residual = residualNorm(solverPtr->getSolutionGroup(), owner_.model_->residualWeights());
     const bool guard = !atCorner();
     if (guard && correctorWentFar()) {
       ++state_.result->failedSteps;
@@ -169,7 +169,7 @@ class PathStepper : public LOCA::Stepper {
       pt.dpds = state_.lastDpds;
       pt.stable = state_.stable;
       pt.iterations = solverPtr->getNumIterations();
-      pt.residual = residualNorm(solverPtr->getSolutionGroup());
+      pt.residual = residualNorm(solverPtr->getSolutionGroup(), owner_.model_->residualWeights());
       state_.result->newtonIterations += pt.iterations;
       report(pt);
     }
@@ -261,7 +261,7 @@ class PathStepper : public LOCA::Stepper {
         best = point(*trial);
         best.dpds = d;
         best.iterations = solver->getNumIterations();
-        best.residual = residualNorm(solver->getSolutionGroup());
+        best.residual = residualNorm(solver->getSolutionGroup(), owner_.model_->residualWeights());
         haveBest = true;
       }
       return d;
@@ -396,7 +396,7 @@ void Continuation::validate(const Vector& x) {
   state.result = &result;
   std::string unread;
   {
-    PathStepper stepper(data, group, convergenceTests(newton_.tolerance(), newton_.maxIterations), params, *this,
+    PathStepper stepper(data, group, convergenceTests(newton_.tolerance(), newton_.maxIterations, model_->residualWeights()), params, *this,
                         state);
     stepper.dryStart();
     const auto& used = params->sublist("LOCA");
@@ -451,7 +451,7 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
     Iterator::IteratorStatus status;
     const int stepsBefore = result.steps + result.failedSteps;
     {
-      PathStepper stepper(data, group, convergenceTests(newton_.tolerance(), newton_.maxIterations), params, *this,
+      PathStepper stepper(data, group, convergenceTests(newton_.tolerance(), newton_.maxIterations, model_->residualWeights()), params, *this,
                           state);
       try {
         status = stepper.run();

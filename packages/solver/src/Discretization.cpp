@@ -153,6 +153,8 @@ Discretization discretize(const Distribution& dist, const ProblemSetup& setup,
   for (const auto& c : setup.model.conditions)
     d.dirichlet->add(d.mesh->nodeSet(c.nodeSet), c.component, c.offset, c.scale);
   d.model = Teuchos::rcp(new ModelEvaluator(d.problem, d.dirichlet, std::move(linearSolver), std::move(parameters)));
+  // A body stiffer than Material's has its residual measured in its own force unit.
+  d.model->setResidualWeights(d.problem->residualWeights(setup.material.youngsModulus()));
   return d;
 }
 

@@ -1,5 +1,6 @@
 #include "cgcm/solver/ModelEvaluator.hpp"
 
+#include <NOX_Thyra_Vector.H>
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_DetachedVectorView.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -39,6 +40,14 @@ ModelEvaluator::ModelEvaluator(std::shared_ptr<assembly::Problem> problem,
   for (int k = 1; k < np; ++k) Thyra::set_ele(k, extra_[k - 1].nominal, pNominal_.ptr());
   nominal_.set_p(0, pNominal_);
   applied_.assign(extra_.size(), std::nan(""));
+}
+
+void ParameterizedModel::setResidualWeights(const Teuchos::RCP<Vector>& weights) {
+  residualWeights_ = weights.is_null()
+                         ? Teuchos::null
+                         : Teuchos::rcp(new NOX::Thyra::Vector(Thyra::createVector(
+                               Teuchos::rcp_implicit_cast<Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(
+                                   weights))));
 }
 
 int ParameterizedModel::parameterIndex(const std::string& name) const {

@@ -16,6 +16,7 @@
 #include "TestSystem.hpp"
 #include "cgcm/core/Error.hpp"
 #include "cgcm/io/Deck.hpp"
+#include "cgcm/solver/Convergence.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
 #include "cgcm/solver/PseudoTransientModel.hpp"
@@ -144,6 +145,35 @@ TEST(Newton, ConvergesQuadraticallyOnLargeInhomogeneousDeformation) {
     }
     EXPECT_GE(quadraticPairs, 1);
   }
+}
+
+// A state needs one Newton update unless its starting point is exact: from
+// rest with nothing loaded (f = 0) none is taken; from the solution perturbed
+// by 1e-12 (|f| inside the tolerance, far above 1e-6 of it) one is.
+TEST(Newton, AStartingPointInsideTheToleranceStillTakesOneUpdate) {
+  auto d = deck({"Geometry/Block/Cells X=2", "Geometry/Block/Cells Y=2", "Geometry/Block/Cells Z=2"});
+  System sys(*d);
+  const solver::NewtonSettings settings;  // Residual Tolerance 1e-10
+  const auto atRest = solveFromRest(sys, settings, 0.0);
+  ASSERT_TRUE(atRest.converged) << atRest.failure;
+  EXPECT_EQ(atRest.iterations, 0);
+  solver::NewtonSolver newton(sys.model, settings);
+  assembly::Vector u(sys.model->map());
+  sys.model->setDisplacement(-0.05);
+  sys.dirichlet->impose(-0.05, u);
+  ASSERT_TRUE(newton.solve(u).converged);
+  {  // a non-uniform perturbation of 1e-12 (a uniform one is a translation: no force)
+    auto v = u.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t i = 0; i < v.extent(0); ++i) v(i, 0) += 1e-12 * std::sin(1.7 * double(i) + 0.3);
+  }
+  assembly::Vector f(sys.model->map());
+  sys.model->evaluateUnconstrained(u, sys.model->parameters(), f);
+  sys.dirichlet->applyToResidual(u, -0.05, f);
+  EXPECT_LT(f.norm2(), settings.tolerance());
+  EXPECT_GT(f.norm2(), solver::kStartingPointFraction * settings.tolerance());
+  const auto again = newton.solve(u);
+  ASSERT_TRUE(again.converged) << again.failure;
+  EXPECT_EQ(again.iterations, 1);
 }
 
 TEST(ModelEvaluator, JacobianMatchesFiniteDifferencesOfResidual) {

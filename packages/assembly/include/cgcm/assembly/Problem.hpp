@@ -55,6 +55,10 @@ class Problem {
   /// The material of a body.
   const material::NeoHookean& material(int body) const { return bulk_.at(body).material(); }
   const std::vector<BulkPart>& bulkParts() const { return bulk_; }
+  /// Per owned row, 1/s² with s = max(1, Y_body / referenceModulus): the weights of the convergence
+  /// test's 2-norm, which then measures the residual of each body stiffer than the reference in that
+  /// body's own force unit (its round-off floor grows with its modulus). Null when no body is stiffer.
+  Teuchos::RCP<Vector> residualWeights(Real referenceModulus) const;
 
   /// The current graph (built on first use and after updateInteractionGraph).
   Teuchos::RCP<const Graph> graph();

@@ -3,11 +3,16 @@
 // scalar parameters in p(0), and hooks for a matrix graph that may have to
 // grow along a path (interaction couplings appear as bodies approach).
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
+#include <Teuchos_RCP.hpp>
 
 #include <string>
 #include <vector>
 
 #include "cgcm/assembly/TpetraTypes.hpp"
+
+namespace NOX::Abstract {
+class Vector;
+}
 
 namespace cgcm::solver {
 
@@ -30,6 +35,15 @@ class ParameterizedModel : public Thyra::StateFuncModelEvaluatorBase<Real> {
   /// True if an evaluation since clearGraphOutdated() met entries outside the graph.
   virtual bool graphOutdated() const { return false; }
   virtual void clearGraphOutdated() {}
+
+  /// Weights of the convergence test's residual 2-norm, sqrt(Σ w_i f_i²) (residualNorm), or null for
+  /// the plain norm.
+  const Teuchos::RCP<const NOX::Abstract::Vector>& residualWeights() const { return residualWeights_; }
+  /// Sets them from a vector on the model's map (null: the plain norm).
+  void setResidualWeights(const Teuchos::RCP<Vector>& weights);
+
+ private:
+  Teuchos::RCP<const NOX::Abstract::Vector> residualWeights_;
 };
 
 }  // namespace cgcm::solver
