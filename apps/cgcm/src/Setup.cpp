@@ -40,6 +40,8 @@ RCP<const ParameterList> validParameters() {
                  "per-body materials: a sublist named after a body of the mesh (the <name> of its \"body:<name>\" "
                  "group, or a built-in geometry's \"sphere\", \"half-space\", \"second sphere\", \"block\") "
                  "with any of Young's Modulus, Poisson's Ratio, Volumetric Energy, Kinematics; the rest comes from Material. "
+                 "Rigid = true makes the body rigid: every node follows the body's fixed or driven condition in "
+                 "each component (a translation), and a force measured on it is the interaction's resultant. "
                  "The interaction scales (gammaL, gammaW, the force unit) use Material's Young's modulus") =
       *material::validBodiesParameters();
 
@@ -154,6 +156,15 @@ solver::ProblemSetup buildProblem(const ParameterList& deck) {
     for (const auto& name : names) originals.push_back(mesh::unmirroredName(name));
     s.bodyMaterials =
         material::bodyMaterials(deck.sublist("Material"), deck.sublist("Bodies"), names, originals, s.report);
+    const auto rigid = material::rigidBodies(deck.sublist("Bodies"), names, originals, s.report);
+    for (std::size_t b = 0; b < rigid.size(); ++b) {
+      if (rigid[b])
+        mesh::makeRigid(s.model, int(b), names[b]);
+      else if (s.bodyMaterials[b].youngsModulus() > s.material.youngsModulus() &&
+               mesh::measureOnWholeBody(s.model, int(b), names[b]))
+        s.report.push_back("body \"" + names[b] + "\": stiffer than Material, its force is measured over all its "
+                           "nodes (the interaction's resultant on it), not at its supports");
+    }
   }
   if (s.interaction) s.interaction->checkMesh(m, s.formulation);
   s.numNodes = std::size_t(m.numNodes());

@@ -71,7 +71,9 @@ std::vector<NeoHookean> bodyMaterials(const ParameterList& material, const Param
     if (found == names.end())
       throw InputError("Bodies/" + name + ": the mesh has no body of that name; its bodies are " + known);
     const std::size_t b = std::size_t(found - names.begin());
-    materials[b] = fromParameters(material, bodies.sublist(name), "Bodies/" + name + "/");
+    ParameterList own = bodies.sublist(name);
+    own.remove(kRigidParameter, false);  // rigidBodies reads it
+    materials[b] = fromParameters(material, own, "Bodies/" + name + "/");
     hasEntry[b] = 1;
     std::ostringstream o;
     o << "body \"" << name << "\": Young's modulus " << materials[b].youngsModulus() << ", Poisson's ratio "
@@ -86,6 +88,34 @@ std::vector<NeoHookean> bodyMaterials(const ParameterList& material, const Param
     report.push_back("body \"" + names[b] + "\": the material of \"" + originals[b] + "\" (its mirror image)");
   }
   return materials;
+}
+
+std::vector<char> rigidBodies(const ParameterList& bodies, const std::vector<std::string>& names,
+                              const std::vector<std::string>& originals, std::vector<std::string>& report) {
+  std::vector<char> rigid(names.size(), 0), hasEntry(names.size(), 0);
+  for (std::size_t b = 0; b < names.size(); ++b) {
+    if (!bodies.isSublist(names[b]) || !bodies.sublist(names[b]).isParameter(kRigidParameter)) continue;
+    const auto& own = bodies.sublist(names[b]);
+    const std::string path = "Bodies/" + names[b] + "/" + kRigidParameter;
+    if (own.isType<bool>(kRigidParameter)) {
+      rigid[b] = own.get<bool>(kRigidParameter);
+    } else if (own.isType<std::string>(kRigidParameter)) {  // from the command line: "true" or "false"
+      const std::string v = own.get<std::string>(kRigidParameter);
+      if (v != "true" && v != "false") throw InputError(path + " = \"" + v + "\": allowed values are true, false");
+      rigid[b] = v == "true";
+    } else {
+      throw InputError(path + ": a bool is expected (true or false)");
+    }
+    hasEntry[b] = 1;
+  }
+  for (std::size_t b = 0; b < names.size(); ++b) {
+    if (!hasEntry[b] && originals.at(b) != names[b]) {
+      const auto original = std::find(names.begin(), names.end(), originals[b]);
+      if (original != names.end()) rigid[b] = rigid[std::size_t(original - names.begin())];
+    }
+    if (rigid[b]) report.push_back("body \"" + names[b] + "\": rigid (moved as a whole by its conditions)");
+  }
+  return rigid;
 }
 
 }  // namespace cgcm::material

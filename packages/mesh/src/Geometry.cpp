@@ -213,6 +213,78 @@ Teuchos::RCP<const ParameterList> validParameters() {
   return valid;
 }
 
+namespace {
+
+// Per node of the mesh, whether it belongs to a cell of `body`.
+std::vector<char> nodesOfBody(const Mesh& m, int body) {
+  std::vector<char> inBody(std::size_t(m.numNodes()), 0);
+  for (const auto& block : m.blocks)
+    if (block.body == body)
+      for (LocalIndex n : block.connectivity) inBody[std::size_t(n)] = 1;
+  return inBody;
+}
+
+// The node set of every node of the body, added to the mesh on first use.
+std::string wholeBodySet(Mesh& m, const std::vector<char>& inBody, const std::string& name) {
+  const std::string set = name + " (all nodes)";
+  if (m.nodeSets.count(set)) return set;
+  std::vector<LocalIndex> nodes;
+  for (LocalIndex n = 0; n < m.numNodes(); ++n)
+    if (inBody[std::size_t(n)]) nodes.push_back(n);
+  if (nodes.empty()) throw InputError("Bodies/" + name + ": the body has no cells");
+  m.nodeSets[set] = std::move(nodes);
+  return set;
+}
+
+}  // namespace
+
+bool measureOnWholeBody(Model& model, int body, const std::string& name) {
+  Mesh& m = *model.mesh;
+  const std::vector<char> inBody = nodesOfBody(m, body);
+  bool changed = false;
+  const auto onBody = [&](ForceResponse& r) {
+    const auto& ns = m.nodeSet(r.nodeSet);
+    if (ns.empty() || !std::all_of(ns.begin(), ns.end(), [&](LocalIndex n) { return inBody[std::size_t(n)] != 0; }))
+      return;
+    r.nodeSet = wholeBodySet(m, inBody, name);
+    changed = true;
+  };
+  onBody(model.force);
+  if (model.balance) onBody(*model.balance);
+  return changed;
+}
+
+void makeRigid(Model& model, int body, const std::string& name) {
+  Mesh& m = *model.mesh;
+  const std::vector<char> inBody = nodesOfBody(m, body);
+  const std::string where = "Bodies/" + name + "/Rigid";
+  const auto touches = [&](const std::string& set) {
+    const auto& ns = m.nodeSet(set);
+    return std::any_of(ns.begin(), ns.end(), [&](LocalIndex n) { return inBody[std::size_t(n)] != 0; });
+  };
+  static const char* const axes[] = {"x", "y", "z"};
+  std::vector<DisplacementCondition> motion;
+  for (int i = 0; i < m.dim; ++i) {
+    const DisplacementCondition* found = nullptr;
+    for (const auto& c : model.conditions) {
+      if (c.component != i || !touches(c.nodeSet)) continue;
+      if (found && (found->offset != c.offset || found->scale != c.scale))
+        throw InputError(where + ": a rigid body moves as a whole, but its node sets \"" + found->nodeSet +
+                         "\" and \"" + c.nodeSet + "\" prescribe different " + axes[i] + "-displacements");
+      if (!found) found = &c;
+    }
+    if (!found)
+      throw InputError(where + ": no condition holds or drives the body's " + axes[i] +
+                       "-displacement; a rigid body has no unknowns of its own, so each component needs a fixed or "
+                       "driven condition on one of its node sets");
+    motion.push_back({"", i, found->offset, found->scale});
+  }
+  const std::string set = wholeBodySet(m, inBody, name);
+  for (auto& c : motion) c.nodeSet = set;
+  model.conditions.insert(model.conditions.end(), motion.begin(), motion.end());
+  measureOnWholeBody(model, body, name);
+}
+
 Real reducedRadius(const ParameterList& g) {
   const Real R0 = g.get<double>("Sphere Radius"), R2 = g.get<double>("Second Sphere Radius");
   return g.get<std::string>("Type") == "sphere on sphere" ? R0 * R2 / (R0 + R2) : R0;

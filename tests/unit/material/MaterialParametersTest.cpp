@@ -78,6 +78,37 @@ TEST(MaterialParameters, ABodysBadOverrideIsNamedWithItsPath) {
   EXPECT_NE(notAChoice.find("Bodies/tip/Kinematics = \"large strain\": not a choice"), std::string::npos) << notAChoice;
 }
 
+// Bodies/<name>/Rigid: read by rigidBodies (a mirror image follows its
+// original), ignored by bodyMaterials, refused when not true or false.
+TEST(MaterialParameters, RigidBodiesAreReadAndMirrorImagesFollow) {
+  const Teuchos::ParameterList material = validated(Teuchos::ParameterList());
+  Teuchos::ParameterList bodies;
+  bodies.sublist("tip").set("Rigid", true);
+  bodies.sublist("substrate").set("Young's Modulus", 3.0);
+  const std::vector<std::string> names = {"substrate", "tip", "tip mirrored in x"};
+  const std::vector<std::string> originals = {"substrate", "tip", "tip"};
+  std::vector<std::string> report;
+  const auto m = bodyMaterials(material, bodies, names, originals, report);  // Rigid is not a material entry
+  expectLaw(m[0], 3.0, 0.2, VolumetricLaw::LogSquared, Kinematics::FiniteStrain);
+  report.clear();
+  EXPECT_EQ(rigidBodies(bodies, names, originals, report), (std::vector<char>{0, 1, 1}));
+  ASSERT_EQ(report.size(), 2u);
+  EXPECT_EQ(report[0], "body \"tip\": rigid (moved as a whole by its conditions)");
+  bodies.sublist("tip mirrored in x").set("Rigid", false);  // an image's own entry wins
+  EXPECT_EQ(rigidBodies(bodies, names, originals, report), (std::vector<char>{0, 1, 0}));
+  Teuchos::ParameterList words;
+  words.sublist("tip").set("Rigid", std::string("yes"));
+  EXPECT_THROW(rigidBodies(words, names, originals, report), InputError);
+  Teuchos::ParameterList number;
+  number.sublist("tip").set("Rigid", 1);
+  try {
+    rigidBodies(number, names, originals, report);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "Bodies/tip/Rigid: a bool is expected (true or false)");
+  }
+}
+
 TEST(MaterialParameters, BodiesGetTheirOwnAndMirrorImagesTheirOriginals) {
   const Teuchos::ParameterList material = validated(Teuchos::ParameterList());
   Teuchos::ParameterList bodies;

@@ -3,6 +3,7 @@
 // interacting surfaces the contact distance apart; P is the whole body's force.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -45,6 +46,61 @@ TEST(Geometry, TheBenchmarkIsTwoInteractingBodiesTheContactDistanceApart) {
   big.set("Type", std::string("sphere on sphere"));
   big.set("Second Sphere Radius", 6.0);
   EXPECT_DOUBLE_EQ(reducedRadius(big), 1.5);
+}
+
+// A rigid body: every node of it takes the condition its node sets carry in
+// each component, and the forces measured on it sum over all its nodes.
+TEST(Geometry, ARigidBodyFollowsItsConditionsWithEveryNode) {
+  Model m = modelOf(Teuchos::ParameterList(), Formulation::Axisymmetric);
+  const std::size_t before = m.conditions.size();
+  const std::string forceSet = m.force.nodeSet, balanceSet = m.balance->nodeSet;
+  makeRigid(m, 1, "half-space");  // held at its base, on the axis
+  const std::string all = "half-space (all nodes)";
+  ASSERT_EQ(m.conditions.size(), before + 2);
+  for (int i = 0; i < 2; ++i) {
+    const DisplacementCondition& c = m.conditions[before + std::size_t(i)];
+    EXPECT_EQ(c.nodeSet, all);
+    EXPECT_EQ(c.component, i);
+    EXPECT_EQ(c.offset, 0.0);
+    EXPECT_EQ(c.scale, 0.0);
+  }
+  // every node of the half-space's cells, and none of the sphere's
+  std::vector<char> inBody(std::size_t(m.mesh->numNodes()), 0);
+  for (const auto& b : m.mesh->blocks)
+    for (LocalIndex n : b.connectivity) inBody[std::size_t(n)] |= char(b.body == 1 ? 1 : 2);
+  const auto& nodes = m.mesh->nodeSet(all);
+  EXPECT_EQ(nodes.size(), std::size_t(std::count(inBody.begin(), inBody.end(), 1)));
+  for (LocalIndex n : nodes) EXPECT_EQ(inBody[std::size_t(n)], 1);
+  EXPECT_EQ(m.force.nodeSet, forceSet);  // measured on the sphere, as before
+  EXPECT_EQ(m.balance->nodeSet, all);    // on the half-space: its whole body
+  // The driven sphere translates with the approach: its driven y-condition and the axis's x = 0.
+  makeRigid(m, 0, "sphere");
+  const DisplacementCondition& y = m.conditions.back();
+  EXPECT_EQ(y.nodeSet, "sphere (all nodes)");
+  EXPECT_EQ(y.component, 1);
+  EXPECT_NE(y.scale, 0.0);
+  EXPECT_EQ(m.force.nodeSet, "sphere (all nodes)");
+  EXPECT_NE(balanceSet, m.balance->nodeSet);
+
+  // measureOnWholeBody alone leaves the conditions as they are.
+  Model stiff = modelOf(Teuchos::ParameterList(), Formulation::PlaneStrain);
+  const std::size_t n = stiff.conditions.size();
+  EXPECT_TRUE(measureOnWholeBody(stiff, 0, "sphere"));
+  EXPECT_EQ(stiff.conditions.size(), n);
+  EXPECT_EQ(stiff.force.nodeSet, "sphere (all nodes)");
+
+  // A block held at one end and driven at the other cannot be rigid.
+  Teuchos::ParameterList g;
+  g.set("Type", std::string("block"));
+  Model block = modelOf(g, Formulation::ThreeD);
+  try {
+    makeRigid(block, 0, "block");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Bodies/block/Rigid: a rigid body moves as a whole, but its node sets"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Geometry, ABlockIsStretchedOnRollersAndDoesNotInteract) {

@@ -24,7 +24,7 @@ NeoHookean fromParameters(const Teuchos::ParameterList& material);
 NeoHookean fromParameters(const Teuchos::ParameterList& material, const Teuchos::ParameterList& overrides,
                           const std::string& path);
 
-/// The Bodies sublist: a sublist per body, named after it, with any of Material's parameters.
+/// The Bodies sublist: a sublist per body, named after it, with any of Material's parameters and Rigid.
 Teuchos::RCP<const Teuchos::ParameterList> validBodiesParameters();
 
 /// Per body (index = body id; `names` the bodies' names): the validated `material` with the
@@ -36,5 +36,16 @@ Teuchos::RCP<const Teuchos::ParameterList> validBodiesParameters();
 std::vector<NeoHookean> bodyMaterials(const Teuchos::ParameterList& material, const Teuchos::ParameterList& bodies,
                                       const std::vector<std::string>& names, const std::vector<std::string>& originals,
                                       std::vector<std::string>& report);
+
+/// The name of the per-body flag that makes a body rigid (Bodies/<name>/Rigid, bool, default false): the
+/// limit of an infinitely stiff material, the body moved as a whole by its conditions (mesh::makeRigid).
+/// bodyMaterials ignores it; rigidBodies reads it.
+inline constexpr const char* kRigidParameter = "Rigid";
+
+/// Per body (index = body id): 1 where bodies/<name>/Rigid is true; a mirror image without an entry
+/// follows its original, as bodyMaterials does. Throws InputError naming Bodies/<name>/Rigid when it
+/// is not a bool. Appends a line per rigid body to `report`.
+std::vector<char> rigidBodies(const Teuchos::ParameterList& bodies, const std::vector<std::string>& names,
+                              const std::vector<std::string>& originals, std::vector<std::string>& report);
 
 }  // namespace cgcm::material

@@ -71,6 +71,23 @@ struct Model {
   std::vector<std::string> report;  ///< what the run's log says about the model
 };
 
+/// Makes each force response whose nodes all lie in body `body` (named
+/// `name`) sum over every node of the body (the node set "<name> (all nodes)",
+/// added): the interaction's resultant on the body, its internal forces
+/// summing to zero, instead of the reaction at its supports, whose round-off
+/// grows with the body's modulus times its displacement. The two agree at
+/// equilibrium. Returns whether a response changed.
+bool measureOnWholeBody(Model& model, int body, const std::string& name);
+
+/// Makes body `body` (named `name`) rigid, the limit of an infinitely stiff
+/// material: every node of the body takes, in each displacement component, the
+/// one condition its constrained nodes carry there (a rigid body translates as a
+/// whole; rotations are not offered), and its forces are measured on the whole
+/// body (measureOnWholeBody). Throws InputError naming Bodies/<name>/Rigid when
+/// a component has no condition on the body (it would keep unknowns of its
+/// own) or two different ones.
+void makeRigid(Model& model, int body, const std::string& name);
+
 /// Everything of a model but its mesh, as bytes, and back (the mesh stays null):
 /// what the other ranks receive of rank 0's model (the mesh travels in subdomains, Subdomain.hpp).
 void put(core::ByteWriter& out, const Model& model);
