@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map stability-map sphere-3d method-study sanitize fuzz peers
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map cylinder-map punch-study stability-map sphere-3d method-study sanitize fuzz peers
 
 deps:
 	@bash scripts/install-deps.sh
@@ -102,6 +102,27 @@ pulloff-map: build
 	/usr/bin/python3 tools/pulloff_map.py --build $(BUILD_DIR) --output output/pulloff-map --jobs $(JOBS) \
 	  --max-level $(PULLOFF_MAX_LEVEL)
 	cp output/pulloff-map/pulloff_map.png doc/figures/pulloff-map.png
+
+# The cylinder on the half-space in plane strain: its load-control pull-off over
+# the Maugis-Dugdale parameter of the cylinder, lambda = 0.1 .. 5, finite and
+# small strain, elastic and rigid half-space, against the M-D cylinder of Baney
+# & Hui and Barquins' JKR end (tools/cylinder_map.py): output/cylinder-map; and
+# the JKR end (lambda = 5) at gammaL = 200, 2000, 8000, where sigma_max/E* falls
+# from 0.39 to 0.06: output/cylinder-map-jkr. The plot goes into doc/figures.
+# Finished runs are reused.
+cylinder-map: build
+	/usr/bin/python3 tools/cylinder_map.py --build $(BUILD_DIR) --output output/cylinder-map --jobs $(JOBS)
+	/usr/bin/python3 tools/cylinder_map.py --build $(BUILD_DIR) --output output/cylinder-map-jkr --jobs $(JOBS) \
+	  --lambda 5 --gammaL 200 2000 8000 --half-space elastic --kinematics finite
+	cp output/cylinder-map/cylinder_map.png doc/figures/cylinder-map.png
+
+# The rigid flat punch (inputs/flat-punch.xml) over its radius in critical
+# sizes 0.05 .. 100: from the strength limit pi a^2 sigma_max to Kendall's
+# sqrt(8 pi a^3 E* w), finite strain (tools/punch_study.py):
+# output/punch-study, and the plot into doc/figures. Finished runs are reused.
+punch-study: build
+	/usr/bin/python3 tools/punch_study.py --build $(BUILD_DIR) --output output/punch-study --jobs $(JOBS)
+	cp output/punch-study/punch_study.png doc/figures/punch-study.png
 
 # The critical gammaW of the jump-to-contact for gammaL = 10 .. 200 (arc-length
 # approaches, bisection with the fold detector): output/stability-map, and
