@@ -199,7 +199,8 @@ struct NeoHookean {
     return s;
   }
 
-  /// Small-strain stress from the displacement gradient: ε = sym(H).
+  /// Small-strain stress σ = Λ tr(ε) I + 2μ ε with ε = sym(H), H = F − I:
+  /// the linearisation of cauchy() about F = I.
   KOKKOS_INLINE_FUNCTION Mat3 linearStressOfDisplacementGradient(const Mat3& H) const {
     const Real trEps = H.a[0][0] + H.a[1][1] + H.a[2][2];
     Mat3 s;
@@ -209,19 +210,8 @@ struct NeoHookean {
     return s;
   }
 
-  /// Small-strain stress σ = Λ tr(ε) I + 2μ ε, ε = sym(F) − I: the
-  /// linearisation of cauchy() about F = I.
-  KOKKOS_INLINE_FUNCTION Mat3 linearStress(const Mat3& F) const {
-    Real trEps = 0.0;
-    for (int i = 0; i < 3; ++i) trEps += F.a[i][i] - 1.0;
-    Mat3 s;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) s.a[i][j] = mu * (F.a[i][j] + F.a[j][i]);
-    for (int i = 0; i < 3; ++i) s.a[i][i] += lambda * trEps - 2.0 * mu;
-    return s;
-  }
-
-  /// Small-strain energy per volume W = Λ/2 (tr ε)² + μ ε:ε; linearStress() is its derivative.
+  /// Small-strain energy per volume W = Λ/2 (tr ε)² + μ ε:ε; linearStressOfDisplacementGradient() is its
+  /// derivative.
   KOKKOS_INLINE_FUNCTION Real linearEnergy(const Mat3& F) const {
     Real trEps = 0.0, epsEps = 0.0;
     for (int i = 0; i < 3; ++i) {
