@@ -12,6 +12,7 @@
 #include "cgcm/analytic/FlatPunch.hpp"
 #include "cgcm/analytic/Peel.hpp"
 #include "cgcm/core/Error.hpp"
+#include "Sampling.hpp"
 
 namespace an = cgcm::analytic;
 using cgcm::kPi;
@@ -19,11 +20,7 @@ using cgcm::Real;
 
 namespace {
 
-std::vector<Real> logspace(Real lo, Real hi, int n) {
-  std::vector<Real> v(n);
-  for (int i = 0; i < n; ++i) v[i] = lo * std::pow(hi / lo, static_cast<Real>(i) / (n - 1));
-  return v;
-}
+using cgcm::analytic::test::logspace;
 
 Real degrees(Real d) { return d * kPi / 180; }
 

@@ -10,17 +10,14 @@
 #include "cgcm/analytic/MaugisDugdale.hpp"
 #include "cgcm/analytic/Models.hpp"
 #include "cgcm/core/Error.hpp"
+#include "Sampling.hpp"
 
 namespace an = cgcm::analytic;
 using cgcm::Real;
 
 namespace {
 
-std::vector<Real> logspace(Real lo, Real hi, int n) {
-  std::vector<Real> v(n);
-  for (int i = 0; i < n; ++i) v[i] = lo * std::pow(hi / lo, static_cast<Real>(i) / (n - 1));
-  return v;
-}
+using cgcm::analytic::test::logspace;
 
 }  // namespace
 

@@ -152,7 +152,9 @@ struct NeoHookean {
     return tau;
   }
 
-  /// Cauchy stress σ given b = F Fᵀ and J = det F > 0.
+  /// Cauchy stress σ given b = F Fᵀ and J = det F > 0: the textbook form,
+  /// kept as the reference cauchyOfDisplacementGradient() is tested against
+  /// (the kernels use the latter).
   KOKKOS_INLINE_FUNCTION Mat3 cauchy(const Mat3& b, Real J) const {
     const Real invJ = 1.0 / J;
     const Real p = volumetricKirchhoff(J);
