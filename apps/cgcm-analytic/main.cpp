@@ -437,11 +437,13 @@ void runPeel(Args& args, std::ostream& out) {
   if (eps == 0 && angles.front() == 0) {
     throw UsageError("theta = 0 needs --epsilon > 0 (an inextensible strip cannot be peeled at 0 degrees)");
   }
-  out << "theta_deg,F_over_bw,inextensible_F_over_bw\n";
+  out << "theta_deg,F_over_bw,inextensible_F_over_bw,held_end_F_over_bw\n";
   for (Real deg : angles) {
     const Real theta = deg * cgcm::kPi / 180;
-    const Real inext = deg > 0 ? an::inextensiblePeelForce(theta) : std::numeric_limits<Real>::infinity();
-    out << num(deg) << "," << num(an::kendallPeelForce(theta, eps)) << "," << num(inext) << "\n";
+    const Real inf = std::numeric_limits<Real>::infinity();
+    const Real inext = deg > 0 ? an::inextensiblePeelForce(theta) : inf;
+    const Real held = deg > 0 ? an::heldEndPeelForce(theta, eps) : inf;
+    out << num(deg) << "," << num(an::kendallPeelForce(theta, eps)) << "," << num(inext) << "," << num(held) << "\n";
   }
 }
 
@@ -693,7 +695,7 @@ std::vector<Command> commands() {
        runCylinder},
       {"peel",
        "Kendall's steady peel force against the angle: columns theta_deg, F_over_bw,\n"
-       "inextensible_F_over_bw.",
+       "inextensible_F_over_bw, held_end_F_over_bw.",
        "options:\n"
        "  --epsilon X      w/(E_t h) >= 0 (required): work of adhesion over the strip's\n"
        "                   tension modulus times its thickness; E_t = E/(1 - nu^2) in plane\n"
@@ -705,7 +707,11 @@ std::vector<Command> commands() {
            kCommonHelp +
            "\nKendall (1975): (F/b)^2/(2 E_t h) + (F/b)(1 - cos theta) - w = 0, written\n"
            "F/(b w) = 2/[(1 - cos theta) + sqrt((1 - cos theta)^2 + 2 epsilon)]; the\n"
-           "inextensible limit is 1/(1 - cos theta) (inf at 0 degrees).\n"
+           "inextensible limit is 1/(1 - cos theta) (inf at 0 degrees). held_end: the strip\n"
+           "held at its far end on a bond that carries no shear (a Lennard-Jones bond to a\n"
+           "flat substrate): its bonded part carries F cos theta, and the balance reads\n"
+           "(F/b)^2 sin^2(theta)/(2 E_t h) + (F/b)(1 - cos theta) - w = 0 (inf at 0 degrees;\n"
+           "doc/analytic-models.md).\n"
            "\nexample: cgcm-analytic peel --epsilon 1e-3 --theta 90\n",
        join({kCommonOptions, {{"epsilon", true, ""}, {"theta-min", true, ""}, {"theta-max", true, ""},
                               {"points", true, ""}, {"theta", true, ""}}}),

@@ -23,17 +23,28 @@ Real oneMinusCos(Real theta) {
   return 2 * h * h;
 }
 
-}  // namespace
-
-Real kendallPeelForce(Real theta, Real epsilon) {
+void requireStrain(Real epsilon) {
   if (!(std::isfinite(epsilon) && epsilon >= 0)) {
     std::ostringstream msg;
     msg << "peel: epsilon = w/(E_t h) must be finite and >= 0, got " << epsilon;
     throw InputError(msg.str());
   }
+}
+
+}  // namespace
+
+Real kendallPeelForce(Real theta, Real epsilon) {
+  requireStrain(epsilon);
   requireAngle(theta, epsilon > 0);
   const Real c = oneMinusCos(theta);
   return 2 / (c + std::sqrt(c * c + 2 * epsilon));
+}
+
+Real heldEndPeelForce(Real theta, Real epsilon) {
+  requireStrain(epsilon);
+  requireAngle(theta, false);
+  const Real c = oneMinusCos(theta), s = std::sin(theta);
+  return 2 / (c + std::sqrt(c * c + 2 * epsilon * s * s));
 }
 
 Real inextensiblePeelForce(Real theta) {

@@ -164,6 +164,39 @@ TEST(Peel, KendallLaw) {
   EXPECT_THROW(an::inextensiblePeelForce(0), cgcm::InputError);
 }
 
+// The strip held at its far end on a bond without shear: its balance (F²
+// sin²θ ε/2 + F(1 − cos θ) = 1 in units of w) is met; it is Kendall's at 90°
+// and for ε → 0, lies above Kendall's below 90° and between 90° and 180°,
+// where its stretching term vanishes (F = w/2), and reproduces the
+// derivation's pieces: load-point travel and strain energy of arm and
+// bonded part per unit advance, computed here from the strains.
+TEST(Peel, HeldEndLaw) {
+  for (Real thetaDeg : {0.5, 15.0, 30.0, 60.0, 90.0, 120.0, 150.0, 179.0, 180.0}) {
+    for (Real eps : {1e-8, 1e-4, 1e-3, 1e-2, 1.0}) {
+      const Real theta = degrees(thetaDeg);
+      const Real f = an::heldEndPeelForce(theta, eps);
+      const Real s = std::sin(theta), c = std::cos(theta);
+      EXPECT_NEAR(0.5 * eps * s * s * f * f + f * (1 - c) - 1, 0, 1e-12) << thetaDeg << " " << eps;
+      // energy per unit advance in units of w, with strains e_a = f eps (arm), e_b = f eps cos θ (bonded)
+      const Real ea = f * eps, eb = f * eps * c;
+      const Real work = f * ((1 + ea) - (1 + eb) * c), strainEnergy = 0.5 * (ea * ea - eb * eb) / eps;
+      EXPECT_NEAR(work - strainEnergy, 1, 1e-11 * std::max(1.0, work)) << thetaDeg << " " << eps;
+      if (thetaDeg != 90 && thetaDeg != 180) {
+        EXPECT_GT(f, an::kendallPeelForce(theta, eps));
+      }
+    }
+    if (thetaDeg >= 15) {  // the limit needs eps sin²θ << (1 − cos θ)²
+      EXPECT_NEAR(an::heldEndPeelForce(degrees(thetaDeg), 1e-12) / an::inextensiblePeelForce(degrees(thetaDeg)), 1, 1e-9);
+    }
+  }
+  for (Real eps : {1e-3, 0.1}) {
+    EXPECT_NEAR(an::heldEndPeelForce(degrees(90), eps), an::kendallPeelForce(degrees(90), eps), 1e-15);
+    EXPECT_NEAR(an::heldEndPeelForce(degrees(180), eps), 0.5, 1e-12);
+  }
+  EXPECT_THROW(an::heldEndPeelForce(0, 1e-3), cgcm::InputError);
+  EXPECT_THROW(an::heldEndPeelForce(1, std::nan("")), cgcm::InputError);
+}
+
 // Kendall's punch and the strength limit meet at the critical size, their
 // ratio is √(a_cr/a) in both geometries, and the strip's Kendall force is the
 // adhesive term of the JKR cylinder (the same crack at the contact edge).
