@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map cylinder-map punch-study stability-map sphere-3d method-study sanitize fuzz peers
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map cylinder-map punch-study peel-study stability-map sphere-3d method-study sanitize fuzz peers
 
 deps:
 	@bash scripts/install-deps.sh
@@ -125,6 +125,15 @@ cylinder-map: build
 punch-study: build
 	/usr/bin/python3 tools/punch_study.py --build $(BUILD_DIR) --output output/punch-study --jobs $(JOBS)
 	cp output/punch-study/punch_study.png doc/figures/punch-study.png
+
+# A strip peeled from a rigid substrate (inputs/peel.xml) at 30 .. 170 degrees
+# for w/(E' h) = 1e-3 and 1e-2, plane strain, finite strain, against the
+# energy balance of the strip held at its far end and Kendall's law, and three
+# angles with the current-area surface density (tools/peel_study.py):
+# output/peel-study, and the plot into doc/figures. Finished runs are reused.
+peel-study: build
+	/usr/bin/python3 tools/peel_study.py --build $(BUILD_DIR) --output output/peel-study --jobs $(JOBS)
+	cp output/peel-study/peel_study.png doc/figures/peel-study.png
 
 # The critical gammaW of the jump-to-contact for gammaL = 10 .. 200 (arc-length
 # approaches, bisection with the fold detector): output/stability-map, and
