@@ -11,17 +11,19 @@ substrate) at --epsilon values of w/(E' h) (1e-3: gammaL 20, sigma_max/E'
 exp(-advance/l_t)), in steps that move the front by at most 2 cells (a run
 that stops, as at the start's peak beyond 120 degrees, is run again with
 steps half as large, twice at most: "-retry1", "-retry2"); the strip
-reaches 15 beyond. The steady force is the last state's P; the table gives its
-drift over the last bending length and the value of an exponential fitted to
-the second half of the path (a check that the run is steady, not a result),
+reaches 15 beyond; the path adds the stretch of the strip to the steady force.
+The steady force is the last state's P; the table gives its drift over the
+last bending length (a row is "ok" when it is at most 0.5 %, else "not
+steady") and the value of an exponential fitted to the second half of the
+path (a check that the run is steady, not a result),
 and the rotation loss: the share of w that Method 3's traction, which counts
 the underside's area projected on the substrate (rbar . n), does not do on an
 underside that turns by alpha while it opens (the traction-weighted mean of
 1 - cos alpha over the last state's front; doc/validation.md, "Peeling").
 w is the work of adhesion the potential keeps inside its cutoff (0.67 % below
-the full w; the run prints it), and eps = w/(E' h) with that w.
+the full w, as `cgcm --check` prints it), and eps = w/(E' h) with that w.
 
-With --current-area ANGLES the same runs at those angles and the smaller
+With --current-area ANGLES (default 30 90 150) the same runs at those angles and the smaller
 epsilon use Interaction/Surface Density = current area (the default of Method
 3) instead of the deck's reference area: the table then shows by how much the
 current area's traction, applied over the bending-stretched underside at the
