@@ -38,6 +38,8 @@ def deformed_cells(ds, step, field=None):
     polys, values = [], []
     for b in range(1, len(names(ds, "eb_names")) + 1):
         conn = np.array(ds.variables[f"connect{b}"][:]) - 1
+        if conn.shape[1] in (8, 9):  # QUAD8, QUAD9: the outline runs corner, edge node, corner, ...
+            conn = conn[:, [0, 4, 1, 5, 2, 6, 3, 7]]
         polys += [np.column_stack((x[c], y[c])) for c in conn]
         if field in element:
             values += list(ds.variables[f"vals_elem_var{element.index(field) + 1}eb{b}"][step - 1])
