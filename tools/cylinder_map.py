@@ -31,7 +31,6 @@ Writes table.csv and cylinder_map.png into --output.
                     [--gammaL 200] [--half-space elastic rigid] [--jobs 2] [--max-level 2] [--cell-size 0.4]
                     [--rerun] [--plan] [--plot-only]
 """
-import argparse
 import concurrent.futures
 import csv
 import math
@@ -185,9 +184,7 @@ def run_case(case, kinematics, out, rerun, max_level, cell_size):
 
 def main():
     global BUILD
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--output", default="output/cylinder-map")
+    ap = pulloff_map.study_parser(__doc__, "output/cylinder-map", "print the cases and their meshes, run nothing")
     ap.add_argument("--lambda", dest="lambdas", type=float, nargs="+", default=LAMBDAS)
     ap.add_argument("--gammaL", type=float, nargs="+", default=[200.0],
                     help="default 200: at a given lambda the contact is half as wide as at 50, at the same cost; "
@@ -196,20 +193,14 @@ def main():
                     help="elastic (Y = 1, as the cylinder) and/or rigid (Bodies/half-space/Rigid)")
     ap.add_argument("--kinematics", nargs="+", choices=("finite", "small"), default=["finite", "small"],
                     help="finite and/or small strain (the other's columns stay empty)")
-    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
     ap.add_argument("--max-level", type=int, default=2, help="the finest graded level (0 .. 6); finer: the band mesh")
     ap.add_argument("--cell-size", type=float, default=0.4, help="the finest cells in cohesive lengths (and <= r0)")
-    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
-    ap.add_argument("--plan", action="store_true", help="print the cases and their meshes, run nothing")
-    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
-    args = ap.parse_args()
-    BUILD = pulloff_map.BUILD = args.build
+    args = pulloff_map.parse_study_args(ap)
+    BUILD = args.build
     if not args.cell_size > 0.0:
         ap.error(f"--cell-size must be > 0 (cohesive lengths), not {args.cell_size}")
     if not 0 <= args.max_level <= 6:
         ap.error(f"--max-level must be 0 .. 6 (Geometry/Mesh Refinement), not {args.max_level}")
-    if args.jobs < 1:
-        ap.error(f"--jobs must be at least 1, not {args.jobs}")
     if any(not 1e-3 <= lam <= 1e3 for lam in args.lambdas):
         ap.error("--lambda values must lie in [1e-3, 1e3]")
     os.makedirs(args.output, exist_ok=True)

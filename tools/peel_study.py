@@ -35,7 +35,6 @@ Writes table.csv and peel_study.png into --output.
                   [--epsilon 1e-3 1e-2] [--current-area 30 90 150] [--jobs 2] [--rerun] [--plan]
                   [--plot-only]
 """
-import argparse
 import concurrent.futures
 import csv
 import math
@@ -147,14 +146,12 @@ def rotation_loss(results, case, gap, cutoff):
     substrate (in steady state every point of the underside passes through these states).
     T ~ s^3 - s^9, s = r_S0/g (the 9-3 law's shape). NaN without results.e."""
     try:
-        import netCDF4  # noqa: F401  (python3-netcdf4)
+        import netCDF4  # python3-netcdf4
         import numpy as np
     except ImportError:
         return float("nan")
     if not os.path.exists(results):
         return float("nan")
-    import netCDF4
-    import numpy as np
     with netCDF4.Dataset(results) as ds:
         names = [str(n) for n in netCDF4.chartostring(ds["name_nod_var"][:])]
         ux = ds[f"vals_nod_var{names.index('displacement_x') + 1}"][-1]
@@ -217,27 +214,19 @@ def run_case(case, out, rerun):
 
 def main():
     global BUILD
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--output", default="output/peel-study")
+    ap = pulloff_map.study_parser(__doc__, "output/peel-study")
     ap.add_argument("--angles", type=float, nargs="+", default=ANGLES, help="peel angles, degrees (1 .. 170)")
     ap.add_argument("--epsilon", type=float, nargs="+", default=EPSILONS, help="w/(E' h) of the cases")
     ap.add_argument("--current-area", type=float, nargs="*", default=[30.0, 90.0, 150.0],
                     help="angles also run with Surface Density = current area at the smallest epsilon")
-    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
-    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
-    ap.add_argument("--plan", action="store_true", help="print the cases, run nothing")
-    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
-    args = ap.parse_args()
-    BUILD = pulloff_map.BUILD = args.build
+    args = pulloff_map.parse_study_args(ap)
+    BUILD = args.build
     for t in args.angles + args.current_area:
         if not 1.0 <= t <= 170.0:
             ap.error(f"angle {t:g}: the mesh is drawn for 1 .. 170 degrees (at 180 the arm would lie on the strip, "
                      "and a body does not interact with itself)")
     if any(not 0.0 < e <= 0.1 for e in args.epsilon):
         ap.error("--epsilon: w/(E' h) in (0, 0.1]")
-    if args.jobs < 1:
-        ap.error(f"--jobs must be at least 1, not {args.jobs}")
     os.makedirs(args.output, exist_ok=True)
     table = os.path.join(args.output, "table.csv")
     if not args.plot_only:

@@ -189,14 +189,34 @@ def run_case(case, kinematics, out, rerun):
     return name, result
 
 
+def study_parser(doc, output, plan_help="print the cases, run nothing"):
+    """The argument parser of a study tool with the options they share: --build, --output (default
+    `output`), --jobs, --rerun, --plan, --plot-only; parse it with parse_study_args."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--output", default=output)
+    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
+    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
+    ap.add_argument("--plan", action="store_true", help=plan_help)
+    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
+    return ap
+
+
+def parse_study_args(ap):
+    """Parses a study_parser's arguments, checks the shared ones and sets this module's BUILD."""
+    global BUILD
+    args = ap.parse_args()
+    if args.jobs < 1:
+        ap.error(f"--jobs must be at least 1, not {args.jobs}")
+    BUILD = args.build
+    return args
+
+
 def main():
     global BUILD
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--output", default="output/pulloff-map")
+    ap = study_parser(__doc__, "output/pulloff-map", "print the cases and their meshes, run nothing")
     ap.add_argument("--gammaL", type=float, nargs="+", help="with --mu: their product instead of the default grid")
     ap.add_argument("--mu", type=float, nargs="+")
-    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
     ap.add_argument("--max-level", type=int, default=2,
                     help="the finest level of the graded mesh (0 .. 6); with --mesh auto, cases needing a "
                          "finer one use the band mesh")
@@ -206,14 +226,10 @@ def main():
     ap.add_argument("--cell-size", type=float,
                     help="the finest cells in cohesive lengths E* r_S0^2 / w (and at most r0); "
                          "default 0.4, and 0.25 above mu = 2 (cell_size_for)")
-    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="a further deck override for every run (repeatable), e.g. "
                          "\"Interaction/Surface Density=reference area\"")
-    ap.add_argument("--plan", action="store_true", help="print the cases and their meshes, run nothing")
-    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
-    args = ap.parse_args()
-    BUILD = args.build
+    args = parse_study_args(ap)
     os.makedirs(args.output, exist_ok=True)
     table = os.path.join(args.output, "table.csv")
 
@@ -225,8 +241,6 @@ def main():
             ap.error(f"--cell-size must be > 0 (cohesive lengths), not {args.cell_size}")
         if not 0 <= args.max_level <= 6:
             ap.error(f"--max-level must be 0 .. 6 (Geometry/Mesh Refinement), not {args.max_level}")
-        if args.jobs < 1:
-            ap.error(f"--jobs must be at least 1, not {args.jobs}")
         cases = [plan(gl, mu, args.max_level, args.mesh, args.cell_size or cell_size_for(mu)) for gl, mu in grid]
         for c in cases:
             c["overrides"] += args.set

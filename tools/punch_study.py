@@ -22,7 +22,6 @@ Writes table.csv and punch_study.png into --output.
     punch_study.py --build build --output output/punch-study [--sizes 0.05 0.2 1 5 20 50 100]
                    [--gammaL 2000] [--jobs 2] [--rerun] [--plan] [--plot-only]
 """
-import argparse
 import concurrent.futures
 import csv
 import math
@@ -101,21 +100,13 @@ def run_case(case, out, rerun):
 
 def main():
     global BUILD
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--output", default="output/punch-study")
+    ap = pulloff_map.study_parser(__doc__, "output/punch-study")
     ap.add_argument("--sizes", type=float, nargs="+", default=SIZES, help="a / a_cr of the cases")
     ap.add_argument("--gammaL", type=float, default=2000.0)
-    ap.add_argument("--jobs", type=int, default=1, help="cgcm runs at a time")
-    ap.add_argument("--rerun", action="store_true", help="run again what the output folder already has")
-    ap.add_argument("--plan", action="store_true", help="print the cases, run nothing")
-    ap.add_argument("--plot-only", action="store_true", help="plot an existing table.csv")
-    args = ap.parse_args()
-    BUILD = pulloff_map.BUILD = args.build
+    args = pulloff_map.parse_study_args(ap)
+    BUILD = args.build
     if any(not x > 0.0 for x in args.sizes):
         ap.error("--sizes must be > 0 (multiples of the critical size)")
-    if args.jobs < 1:
-        ap.error(f"--jobs must be at least 1, not {args.jobs}")
     os.makedirs(args.output, exist_ok=True)
     table = os.path.join(args.output, "table.csv")
     if not args.plot_only:
