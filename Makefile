@@ -126,7 +126,7 @@ punch-study: build
 	/usr/bin/python3 tools/punch_study.py --build $(BUILD_DIR) --output output/punch-study --jobs $(JOBS)
 	cp output/punch-study/punch_study.png doc/figures/punch-study.png
 
-# A strip peeled from a rigid substrate (inputs/peel.xml) at 30 .. 170 degrees
+# A strip peeled from a rigid substrate (inputs/peel.xml) at 15 .. 170 degrees
 # for w/(E' h) = 1e-3 and 1e-2, plane strain, finite strain, against the
 # energy balance of the strip held at its far end and Kendall's law, and three
 # angles with the current-area surface density (tools/peel_study.py):
