@@ -283,7 +283,7 @@ def plot(table, png):
     with open(table, newline="") as f:
         data = list(csv.DictReader(f))
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(6.4, 7.0), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
-    thetas = [20.0 + i for i in range(161)]
+    thetas = [10.0 + i for i in range(171)]
     for k, eps in enumerate(sorted({float(r["epsilon"]) for r in data})):
         color = f"C{k}"
         curve = analytic_curve(thetas, eps)
