@@ -14,9 +14,8 @@ steps half as large, twice at most: "-retry1", "-retry2"); the strip
 reaches 15 beyond; the path adds the stretch of the strip to the steady force.
 The steady force is the last state's P; the table gives its drift over the
 last bending length or the last tenth of the path, whichever is longer (a row
-is "ok" when it is at most 0.5 %, else "not steady", and is not plotted) and the value of an exponential fitted to the second half of the
-path (a check that the run is steady, not a result),
-and the rotation loss: the share of w that Method 3's traction, which counts
+is "ok" when it is at most 0.5 %, else "not steady", and is not plotted) and
+the rotation loss: the share of w that Method 3's traction, which counts
 the underside's area projected on the substrate (rbar . n), does not do on an
 underside that turns by alpha while it opens (the traction-weighted mean of
 1 - cos alpha over the last state's front; doc/validation.md, "Peeling").
@@ -49,6 +48,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_field  # noqa: E402
 import pulloff_map  # noqa: E402
 from analytic_csv import rows  # noqa: E402
 
@@ -125,26 +125,14 @@ def plan(theta, eps, density="reference area"):
 
 
 def steady_force(curve, case):
-    """Last P, its drift over the last bending length of advance or the last tenth of the path,
-    whichever is longer (relative), and the limit of
-    P = a + b exp(-u/c) fitted over the second half of the path (NaN if it does not fit)."""
+    """Last P and its drift (relative) over the last bending length of advance or the last tenth
+    of the path, whichever is longer."""
     with open(curve, newline="") as f:
         data = [(float(r["u"]), float(r["P"])) for r in csv.DictReader(f)]
     u_last, p_last = data[-1]
     du = max(case["bending_length"] * case["travel"], 0.1 * u_last)
     earlier = min(data, key=lambda r: abs(r[0] - (u_last - du)))
-    drift = (earlier[1] - p_last) / p_last
-    tail = [r for r in data if r[0] >= 0.5 * u_last]
-    limit = float("nan")
-    if len(tail) >= 8:
-        # three equally spaced averages: a + b q^k, q = exp(-spacing/c)
-        n = len(tail) // 3
-        means = [sum(p for _, p in tail[k * n:(k + 1) * n]) / n for k in range(3)]
-        d1, d2 = means[1] - means[0], means[2] - means[1]
-        if d1 != 0.0 and 0.0 < d2 / d1 < 1.0:
-            q = d2 / d1
-            limit = means[2] + d2 * q / (1.0 - q)
-    return p_last, drift, limit
+    return p_last, (earlier[1] - p_last) / p_last
 
 
 def rotation_loss(results, case, gap, cutoff):
@@ -161,10 +149,8 @@ def rotation_loss(results, case, gap, cutoff):
     if not os.path.exists(results):
         return float("nan")
     with netCDF4.Dataset(results) as ds:
-        names = [str(n) for n in netCDF4.chartostring(ds["name_nod_var"][:])]
-        ux = ds[f"vals_nod_var{names.index('displacement_x') + 1}"][-1]
-        uy = ds[f"vals_nod_var{names.index('displacement_y') + 1}"][-1]
-        x, y = ds["coordx"][:], ds["coordy"][:]
+        x, y = np.array(ds["coordx"][:]), np.array(ds["coordy"][:])
+        xd, yd = plot_field.deformed_xy(ds, ds.dimensions["time_step"].size)  # the last state
     phi = -math.radians(case["theta"] - 90.0)  # back to the drawing's frame: substrate top on y = 0
     c, s = math.cos(phi), math.sin(phi)
     def turn(a, b):
@@ -172,7 +158,7 @@ def rotation_loss(results, case, gap, cutoff):
     X0, Y0 = turn(x, y)
     bonded = np.where((np.abs(Y0 - gap) < 1e-6) & (X0 > XF - 1e-9))[0]
     bonded = bonded[np.argsort(X0[bonded])]
-    xc, yc = turn(x[bonded] + ux[bonded], y[bonded] + uy[bonded])
+    xc, yc = turn(xd[bonded], yd[bonded])
     alpha = np.arctan2(np.gradient(yc), np.gradient(xc))
     zone = (yc > gap * 1.0001) & (yc < cutoff)
     if zone.sum() < 4:
@@ -209,11 +195,11 @@ def run_case(case, out, rerun):
         code, seconds = pulloff_map.run_logged(args, folder, log, rerun)
         if code == 0:
             break
-    result = {"status": "completed" if code == 0 else f"exit {code}", "seconds": seconds, "attempts": attempt + 1}
+    result = {"status": "completed" if code == 0 else f"exit {code}", "seconds": seconds, "attempts": attempt + 1,
+              "cutoff": cutoff_fraction(case)}
     curve = os.path.join(folder, "load_curve.csv")
     if code == 0 and os.path.exists(curve):
-        result["P"], result["drift"], result["limit"] = steady_force(curve, case)
-        result["cutoff"] = cutoff_fraction(case)
+        result["P"], result["drift"] = steady_force(curve, case)
         r0 = 1.0 / case["gammaL"]
         result["rotation_loss"] = rotation_loss(os.path.join(folder, "results.e"), case, r0 / 15 ** (1 / 6),
                                                 10.0 * r0)
@@ -255,17 +241,17 @@ def main():
         with open(table, "w", newline="") as f:
             out = csv.writer(f)
             out.writerow(["theta_deg", "epsilon", "surface_density", "F_over_bw", "drift_last_bending_length",
-                          "fitted_limit_over_bw", "held_end_law", "kendall", "inextensible", "F_over_held_end",
+                          "held_end_law", "kendall", "inextensible", "F_over_held_end",
                           "F_over_kendall", "rotation_loss", "F_over_held_end_less_rotation_loss", "gammaL",
                           "bending_length", "advance", "seconds", "status"])
             for c, r in rows_out:
                 nan = float("nan")
-                w = c["eps"] * E_PLANE * (1.0 - r.get("cutoff", cutoff_fraction(c)))  # the work the potential keeps
+                w = c["eps"] * E_PLANE * (1.0 - r["cutoff"])  # the work the potential keeps
                 eps = w / E_PLANE
                 held, kendall, inext = laws(c["theta"], eps)
                 f_w = r.get("P", nan) / w
                 out.writerow([f"{c['theta']:g}", f"{c['eps']:g}", c["density"], f"{f_w:.5f}",
-                              f"{r.get('drift', nan):.2e}", f"{r.get('limit', nan) / w:.5f}", f"{held:.5f}",
+                              f"{r.get('drift', nan):.2e}", f"{held:.5f}",
                               f"{kendall:.5f}", f"{inext:.5f}", f"{f_w / held:.4f}", f"{f_w / kendall:.4f}",
                               f"{r.get('rotation_loss', nan):.4f}",
                               f"{f_w / (held * (1.0 - r.get('rotation_loss', nan))):.4f}",
