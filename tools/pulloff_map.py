@@ -213,7 +213,6 @@ def parse_study_args(ap):
 
 
 def main():
-    global BUILD
     ap = study_parser(__doc__, "output/pulloff-map", "print the cases and their meshes, run nothing")
     ap.add_argument("--gammaL", type=float, nargs="+", help="with --mu: their product instead of the default grid")
     ap.add_argument("--mu", type=float, nargs="+")
