@@ -1,4 +1,5 @@
 #include "MumpsSolver.hpp"
+#include "MumpsFactorization.hpp"
 
 #include <dmumps_c.h>
 #include <mpi.h>
@@ -24,29 +25,12 @@ using assembly::Map;
 using assembly::MultiVector;
 using Converter = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
 
-// MUMPS' 1-based ICNTL / INFOG (the manual's numbering).
-int& icntl(DMUMPS_STRUC_C& id, int i) { return id.icntl[i - 1]; }
-int infog(const DMUMPS_STRUC_C& id, int i) { return id.infog[i - 1]; }
-
-// What a failed MUMPS phase means, in words where the code is common.
-std::string failure(const char* phase, const DMUMPS_STRUC_C& id) {
-  std::ostringstream os;
-  os << "MUMPS " << phase << " failed (INFOG(1) = " << infog(id, 1) << ", INFOG(2) = " << infog(id, 2) << ")";
-  if (infog(id, 1) == -10) os << ": the matrix is numerically singular";
-  if (infog(id, 1) == -9 || infog(id, 1) == -8 || infog(id, 1) == -13) os << ": out of memory";
-  return os.str();
-}
-
-/// One factorised matrix: the MUMPS instance, the coordinates it was given and
-/// the maps that gather right-hand sides on rank 0.
+/// One factorised matrix: its MUMPS factorisation (general: Dirichlet rows make the matrix unsymmetric).
 class MumpsLinearOpWithSolve : public OperatorSolveBase {
  public:
-  /// `ordering`: MUMPS' ICNTL(7).
-  explicit MumpsLinearOpWithSolve(int ordering) : ordering_(ordering) {}
-  ~MumpsLinearOpWithSolve() override { release(); }
+  explicit MumpsLinearOpWithSolve(int ordering) : mumps_(MumpsFactorization::Symmetry::General, ordering) {}
 
-  /// Factorises the matrix of `src` (collective), reusing the analysis while
-  /// the sparsity pattern is unchanged.
+  /// Factorises the matrix of `src`: each rank hands over its owned rows. Collective.
   void initialize(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& src) {
     setSource(src);
     auto A = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Converter::getConstTpetraOperator(fwdOp_), true);
@@ -56,8 +40,6 @@ class MumpsLinearOpWithSolve : public OperatorSolveBase {
     const GlobalIndex n = GlobalIndex(rowMap->getGlobalNumElements());
     if (rowMap->getMaxAllGlobalIndex() - base + 1 != n)
       throw std::runtime_error("MUMPS: the matrix rows are not numbered contiguously");
-
-    // distributed coordinates, 1-based
     std::vector<int> irn, jcn;
     std::vector<Real> val;
     irn.reserve(A->getNodeNumEntries());
@@ -74,73 +56,8 @@ class MumpsLinearOpWithSolve : public OperatorSolveBase {
         val.push_back(vals(k));
       }
     }
-
-    const auto comm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(rowMap->getComm(), true);
-    // every rank must take the same branch: the MUMPS phases are collective
-    const int sameHere = initialized_ && n == n_ && irn == irn_ && jcn == jcn_ ? 1 : 0;
-    int sameEverywhere = 0;
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, sameHere, Teuchos::outArg(sameEverywhere));
-    const bool samePattern = sameEverywhere == 1;
-    if (!samePattern) {
-      release();
-      id_ = DMUMPS_STRUC_C();
-      id_.comm_fortran = MPI_Comm_c2f(*comm->getRawMpiComm());
-      id_.par = 1;  // rank 0 works too
-      id_.sym = 0;  // general: Dirichlet rows make the matrix unsymmetric
-      id_.job = -1;
-      dmumps_c(&id_);
-      if (infog(id_, 1) < 0) throw std::runtime_error(failure("initialisation", id_));
-      initialized_ = true;
-      icntl(id_, 1) = -1;  // no messages
-      icntl(id_, 2) = -1;
-      icntl(id_, 3) = -1;
-      icntl(id_, 4) = 0;
-      icntl(id_, 5) = 0;   // assembled matrix
-      icntl(id_, 18) = 3;  // distributed by rows, as Tpetra holds it
-      icntl(id_, 20) = 0;  // dense right-hand sides on rank 0
-      icntl(id_, 21) = 0;  // solution on rank 0
-      icntl(id_, 7) = ordering_;
-      n_ = n;
-      irn_ = std::move(irn);
-      jcn_ = std::move(jcn);
-      id_.n = int(n);
-      id_.nnz_loc = MUMPS_INT8(irn_.size());
-      id_.irn_loc = irn_.data();
-      id_.jcn_loc = jcn_.data();
-      id_.job = 1;
-      dmumps_c(&id_);
-      if (infog(id_, 1) < 0) throw std::runtime_error(failure("analysis", id_));
-
-      // rank 0 holds every row of the gathered vectors
-      std::vector<GlobalIndex> all;
-      if (comm->getRank() == 0)
-        for (GlobalIndex g = 0; g < n; ++g) all.push_back(base + g);
-      rootMap_ = Teuchos::rcp(new Map(Tpetra::global_size_t(n), all.data(), all.size(), rowMap->getIndexBase(), comm));
-      gather_ = Teuchos::rcp(new Import(A->getRangeMap(), rootMap_));
-      scatter_ = Teuchos::rcp(new Import(rootMap_, A->getDomainMap()));
-    }
-    val_ = std::move(val);
-    id_.a_loc = val_.data();
-    // numerical factorisation; out of memory: more workspace, twice
-    for (int attempt = 0;; ++attempt) {
-      id_.job = 2;
-      dmumps_c(&id_);
-      if (infog(id_, 1) >= 0) break;
-      if (infog(id_, 1) != -9 || attempt == 2) throw std::runtime_error(failure("factorisation", id_));
-      icntl(id_, 14) *= 2;
-    }
+    mumps_.factorize(A->getRangeMap(), A->getDomainMap(), n, base, std::move(irn), std::move(jcn), std::move(val));
   }
-
-  void release() {
-    if (!initialized_) return;
-    int finalized = 0;
-    MPI_Finalized(&finalized);
-    if (finalized) return;  // destroyed after MPI: the process is ending anyway
-    id_.job = -2;
-    dmumps_c(&id_);
-    initialized_ = false;
-  }
-
 
  protected:
   bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp, const Thyra::SolveMeasureType&) const override {
@@ -151,32 +68,14 @@ class MumpsLinearOpWithSolve : public OperatorSolveBase {
                                      const Teuchos::Ptr<const Thyra::SolveCriteria<Real>>) const override {
     auto b = Converter::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
     auto x = Converter::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
-    MultiVector root(rootMap_, b->getNumVectors());
-    root.doImport(*b, *gather_, Tpetra::INSERT);
-    {
-      auto data = root.getLocalViewHost(Tpetra::Access::ReadWrite);  // column-major, leading dimension n on rank 0
-      id_.rhs = data.data();
-      id_.nrhs = int(root.getNumVectors());
-      id_.lrhs = root.getLocalLength() > 0 ? int(root.getStride()) : int(n_);
-      id_.job = 3;
-      dmumps_c(&id_);
-    }
-    if (infog(id_, 1) < 0) throw std::runtime_error(failure("solve", id_));
-    x->doImport(root, *scatter_, Tpetra::INSERT);
+    mumps_.solve(*b, *x);
     Thyra::SolveStatus<Real> status;
     status.solveStatus = Thyra::SOLVE_STATUS_CONVERGED;
     return status;
   }
 
  private:
-  mutable DMUMPS_STRUC_C id_{};
-  int ordering_;
-  bool initialized_ = false;
-  GlobalIndex n_ = 0;
-  std::vector<int> irn_, jcn_;
-  std::vector<Real> val_;
-  Teuchos::RCP<const Map> rootMap_;
-  Teuchos::RCP<const Import> gather_, scatter_;
+  MumpsFactorization mumps_;
 };
 
 }  // namespace
@@ -224,6 +123,108 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getVal
     return list;
   }();
   return valid;
+}
+
+namespace {
+// MUMPS' 1-based ICNTL / INFOG (the manual's numbering).
+int& icntl(DMUMPS_STRUC_C& id, int i) { return id.icntl[i - 1]; }
+int infog(const DMUMPS_STRUC_C& id, int i) { return id.infog[i - 1]; }
+
+// What a failed MUMPS phase means, in words where the code is common.
+std::string failure(const char* phase, const DMUMPS_STRUC_C& id) {
+  std::ostringstream os;
+  os << "MUMPS " << phase << " failed (INFOG(1) = " << infog(id, 1) << ", INFOG(2) = " << infog(id, 2) << ")";
+  if (infog(id, 1) == -10) os << ": the matrix is numerically singular";
+  if (infog(id, 1) == -9 || infog(id, 1) == -8 || infog(id, 1) == -13) os << ": out of memory";
+  return os.str();
+}
+}  // namespace
+
+void MumpsFactorization::factorize(const Teuchos::RCP<const Map>& rangeMap, const Teuchos::RCP<const Map>& domainMap,
+                                   GlobalIndex n, GlobalIndex base, std::vector<int> irn, std::vector<int> jcn,
+                                   std::vector<Real> val) {
+  const auto comm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(rangeMap->getComm(), true);
+  // every rank must take the same branch: the MUMPS phases are collective
+  const int sameHere = initialized_ && n == n_ && irn == irn_ && jcn == jcn_ ? 1 : 0;
+  int sameEverywhere = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, sameHere, Teuchos::outArg(sameEverywhere));
+  if (sameEverywhere != 1) {
+    release();
+    id_ = DMUMPS_STRUC_C();
+    id_.comm_fortran = MPI_Comm_c2f(*comm->getRawMpiComm());
+    id_.par = 1;  // rank 0 works too
+    id_.sym = symmetry_ == Symmetry::General ? 0 : 2;  // 2: symmetric, not necessarily definite (LDL^T)
+    id_.job = -1;
+    dmumps_c(&id_);
+    if (infog(id_, 1) < 0) throw std::runtime_error(failure("initialisation", id_));
+    initialized_ = true;
+    icntl(id_, 1) = -1;  // no messages
+    icntl(id_, 2) = -1;
+    icntl(id_, 3) = -1;
+    icntl(id_, 4) = 0;
+    icntl(id_, 5) = 0;   // assembled matrix
+    icntl(id_, 18) = 3;  // distributed coordinates
+    icntl(id_, 20) = 0;  // dense right-hand sides on rank 0
+    icntl(id_, 21) = 0;  // solution on rank 0
+    icntl(id_, 7) = ordering_;
+    // the root front factorised by MUMPS itself, not ScaLAPACK: only then is INFOG(12) the count of negative pivots
+    if (symmetry_ == Symmetry::Symmetric) icntl(id_, 13) = 1;
+    n_ = n;
+    irn_ = std::move(irn);
+    jcn_ = std::move(jcn);
+    id_.n = int(n);
+    id_.nnz_loc = MUMPS_INT8(irn_.size());
+    id_.irn_loc = irn_.data();
+    id_.jcn_loc = jcn_.data();
+    id_.job = 1;
+    dmumps_c(&id_);
+    if (infog(id_, 1) < 0) throw std::runtime_error(failure("analysis", id_));
+
+    // rank 0 holds every row of the gathered vectors
+    std::vector<GlobalIndex> all;
+    if (comm->getRank() == 0)
+      for (GlobalIndex g = 0; g < n; ++g) all.push_back(base + g);
+    rootMap_ = Teuchos::rcp(new Map(Tpetra::global_size_t(n), all.data(), all.size(), rangeMap->getIndexBase(), comm));
+    gather_ = Teuchos::rcp(new Import(rangeMap, rootMap_));
+    scatter_ = Teuchos::rcp(new Import(rootMap_, domainMap));
+  }
+  val_ = std::move(val);
+  id_.a_loc = val_.data();
+  // numerical factorisation; out of memory: more workspace, twice
+  for (int attempt = 0;; ++attempt) {
+    id_.job = 2;
+    dmumps_c(&id_);
+    if (infog(id_, 1) >= 0) break;
+    if (infog(id_, 1) != -9 || attempt == 2) throw std::runtime_error(failure("factorisation", id_));
+    icntl(id_, 14) *= 2;
+  }
+}
+
+void MumpsFactorization::solve(const MultiVector& b, MultiVector& x) const {
+  MultiVector root(rootMap_, b.getNumVectors());
+  root.doImport(b, *gather_, Tpetra::INSERT);
+  {
+    auto data = root.getLocalViewHost(Tpetra::Access::ReadWrite);  // column-major, leading dimension n on rank 0
+    id_.rhs = data.data();
+    id_.nrhs = int(root.getNumVectors());
+    id_.lrhs = root.getLocalLength() > 0 ? int(root.getStride()) : int(n_);
+    id_.job = 3;
+    dmumps_c(&id_);
+  }
+  if (infog(id_, 1) < 0) throw std::runtime_error(failure("solve", id_));
+  x.doImport(root, *scatter_, Tpetra::INSERT);
+}
+
+int MumpsFactorization::negativePivots() const { return infog(id_, 12); }
+
+void MumpsFactorization::release() {
+  if (!initialized_) return;
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized) return;  // destroyed after MPI: the process is ending anyway
+  id_.job = -2;
+  dmumps_c(&id_);
+  initialized_ = false;
 }
 
 }  // namespace cgcm::solver
