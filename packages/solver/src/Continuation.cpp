@@ -14,6 +14,8 @@
 #include <Teuchos_oblackholestream.hpp>
 
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <sstream>
 
 #include "cgcm/core/Error.hpp"
@@ -56,6 +58,7 @@ struct Continuation::RunState {
   Real lastStepSize = 0.0;    ///< arclength of the last step (signed)
   bool atFold = false;        ///< a fold was located and the segment stops there
   bool haveLast = false;
+  Spectrum lastSpectrum{{}, {}, -1};      ///< at the last converged point (a monitored spectrum; negative = -1: none yet)
 };
 
 // LOCA's stepper with cgcm's bookkeeping: every converged point goes to the
@@ -115,13 +118,21 @@ class PathStepper : public LOCA::Stepper {
     pt.iterations = iterations;
     pt.residual = residual;
     const bool locate = !state_.segment->landOnly || state_.result->folds.empty();
-    if (dA * dB < 0.0 && (!locate || !locateFold(dA, dB))) {
+    const bool foldBetween = dA * dB < 0.0;
+    if (foldBetween && (!locate || !locateFold(dA, dB))) {
       // The fold was not located (or could not be) between A and B: B stands for it.
       pt.fold = true;
       state_.result->folds.push_back(pt);
       state_.stable = !state_.stable;
     }
-    pt.stable = pt.fold || state_.stable;
+    pt.stable = pt.stableByFolds = pt.fold || state_.stable;
+    if (owner_.spectrum_) {
+      const Spectrum sB = assess(pt);
+      // an eigenvalue crossed 0 where the path did not turn: a branch point between A and B
+      const Spectrum& sA = state_.lastSpectrum;
+      if (!foldBetween && sA.negative >= 0 && sB.negative != sA.negative) locateBranchPoint(sA, sB, pt);
+      state_.lastSpectrum = sB;
+    }
     if (state_.segment->stopAtFold && !state_.result->folds.empty()) {
       if (pt.fold) report(pt);  // B stands for a fold that was not located
       state_.atFold = true;
@@ -167,7 +178,8 @@ class PathStepper : public LOCA::Stepper {
       // The natural step that lands on the bound: same branch as the last point.
       PathPoint pt = point(*curGroupPtr);
       pt.dpds = state_.lastDpds;
-      pt.stable = state_.stable;
+      pt.stable = pt.stableByFolds = state_.stable;
+      if (owner_.spectrum_) assess(pt);
       pt.iterations = solverPtr->getNumIterations();
       pt.residual = residualNorm(solverPtr->getSolutionGroup(), owner_.model_->residualWeights());
       state_.result->newtonIterations += pt.iterations;
@@ -243,15 +255,7 @@ class PathStepper : public LOCA::Stepper {
     PathPoint best;
     bool haveBest = false;
     auto g = [&](Real t) -> Real {
-      trial->copy(*prevGroupPtr);
-      trial->setStepSize(t * h);
-      trial->setPrevX(prevGroupPtr->getX());
-      trial->computeX(*prevGroupPtr, *prevPredictorPtr, t * h);
-      auto solver = NOX::Solver::buildSolver(trial, noxStatusTestPtr, parsedParams->getSublist("NOX"));
-      if (solver->solve() != NOX::StatusTest::Converged)
-        throw NumericalError("fold location: the corrector did not converge at t = " + std::to_string(t));
-      state_.result->newtonIterations += solver->getNumIterations();
-      trial->copy(solver->getSolutionGroup());
+      const auto [iterations, residual] = correctorAt(*trial, t, "fold location");
       trial->postProcessContinuationStep(Iterator::Successful);  // the tangent of this point, oriented by the secant
       trial->computePredictor();
       const Real d =
@@ -260,8 +264,8 @@ class PathStepper : public LOCA::Stepper {
         bestAbs = std::abs(d);
         best = point(*trial);
         best.dpds = d;
-        best.iterations = solver->getNumIterations();
-        best.residual = residualNorm(solver->getSolutionGroup(), owner_.model_->residualWeights());
+        best.iterations = iterations;
+        best.residual = residual;
         haveBest = true;
       }
       return d;
@@ -275,11 +279,135 @@ class PathStepper : public LOCA::Stepper {
     }
     if (!haveBest) return false;
     best.fold = true;
-    best.stable = true;  // marginal: the end of a stable branch or the start of one
+    best.stable = best.stableByFolds = true;  // marginal: the end of a stable branch or the start of one
+    if (owner_.spectrum_) assess(best);
     state_.result->folds.push_back(best);
     report(best);
     state_.stable = !state_.stable;
     return true;
+  }
+
+  // The arc-length corrector from A (the last converged point) at t h along A's tangent, into `trial`
+  // (h: the step A -> B). Returns its Newton iterations and residual; throws NumericalError naming `what`.
+  std::pair<int, Real> correctorAt(LOCA::MultiContinuation::AbstractStrategy& trial, Real t, const char* what) {
+    const Real h = stepSize;
+    trial.copy(*prevGroupPtr);
+    trial.setStepSize(t * h);
+    trial.setPrevX(prevGroupPtr->getX());
+    trial.computeX(*prevGroupPtr, *prevPredictorPtr, t * h);
+    auto solver = NOX::Solver::buildSolver(Teuchos::rcpFromRef(trial), noxStatusTestPtr, parsedParams->getSublist("NOX"));
+    if (solver->solve() != NOX::StatusTest::Converged)
+      throw NumericalError(std::string(what) + ": the corrector did not converge at t = " + std::to_string(t));
+    state_.result->newtonIterations += solver->getNumIterations();
+    trial.copy(solver->getSolutionGroup());
+    return {solver->getNumIterations(), residualNorm(solver->getSolutionGroup(), owner_.model_->residualWeights())};
+  }
+
+  // The tangent's spectrum at pt: its eigenvalues, and its stability from them (a located fold or branch point
+  // stays marginal). Collective.
+  Spectrum assess(PathPoint& pt) {
+    Spectrum s = owner_.spectrum_->compute(*pt.x, pt.p);
+    pt.eigenvalues = s.eigenvalues;
+    pt.negativeEigenvalues = s.negative;
+    pt.critical = s.mode();
+    if (!pt.fold && !pt.branchPoint) pt.stable = s.stable();
+    return s;
+  }
+
+  // The mode of the eigenvalue nearest 0.
+  static const Teuchos::RCP<Vector>& nearestZeroMode(const Spectrum& s) {
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < s.eigenvalues.size(); ++i)
+      if (std::abs(s.eigenvalues[i]) < std::abs(s.eigenvalues[k])) k = i;
+    return s.modes[k];
+  }
+
+  // The number of negative eigenvalues changed from A (sA) to B (sB) without a fold: eigenvalue number
+  // j = min(negative) crossed 0. Its root along the step, each trial an arc-length corrector solve from A and
+  // a spectrum; the branch point found is reported (before B) with the mode of that eigenvalue; if it
+  // cannot be located (the crossing eigenvalue not among those computed, or a trial did not converge), B
+  // stands for it. Then, if asked, a point of the other branch.
+  void locateBranchPoint(const Spectrum& sA, const Spectrum& sB, PathPoint& b) {
+    const int j = std::min(sA.negative, sB.negative);
+    const Real gA = sA.ordered(j), gB = sB.ordered(j);
+    PathPoint best;
+    Teuchos::RCP<LOCA::MultiContinuation::AbstractStrategy> at;
+    if (std::isfinite(gA) && std::isfinite(gB) && gA * gB < 0.0) {
+      auto trial = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(prevGroupPtr->clone());
+      Real bestAbs = std::numeric_limits<Real>::infinity();
+      auto g = [&](Real t) -> Real {
+        const auto [iterations, residual] = correctorAt(*trial, t, "branch point location");
+        PathPoint q = point(*trial);
+        q.iterations = iterations;
+        q.residual = residual;
+        q.branchPoint = true;
+        const Spectrum s = owner_.spectrum_->compute(*q.x, q.p);
+        const Real value = s.ordered(j);
+        if (!std::isfinite(value)) throw NumericalError("branch point location: the crossing eigenvalue was lost");
+        if (std::abs(value) < bestAbs) {
+          bestAbs = std::abs(value);
+          q.eigenvalues = s.eigenvalues;
+          q.negativeEigenvalues = s.negative;
+          q.critical = nearestZeroMode(s);
+          q.dpds = dynamic_cast<const LOCA::MultiContinuation::ExtendedVector&>(trial->getPredictorTangent()[0])
+                       .getScalar(0);
+          best = q;
+          at = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(trial->clone());
+        }
+        return value;
+      };
+      try {
+        std::uintmax_t maxIterations = 40;
+        boost::math::tools::toms748_solve(
+            g, 0.0, 1.0, gA, gB, [](Real a, Real c) { return std::abs(c - a) <= 1e-11; }, maxIterations);
+      } catch (const std::exception&) {
+        // a trial did not converge: the best point so far, if any, stands for the branch point
+      }
+    }
+    if (at.is_null()) {
+      b.branchPoint = true;  // B stands for it
+      b.stable = true;
+      state_.result->branchPoints.push_back(b);
+      return;
+    }
+    best.stable = j == 0;  // marginal: the end of a stable branch or the start of one
+    best.stableByFolds = state_.stable;
+    state_.result->branchPoints.push_back(best);
+    report(best);
+    if (state_.segment->switchAmplitude != 0.0) switchBranch(*at, *best.critical, state_.segment->switchAmplitude);
+  }
+
+  // A point of the other branch through the branch point `at`: the corrector along (mode, 0) from
+  // at + amplitude * mode, with the arc-length constraint mode . (x - x_at) = amplitude mode . mode.
+  void switchBranch(const LOCA::MultiContinuation::AbstractStrategy& at, const Vector& mode, Real amplitude) {
+    try {
+      auto other = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(at.clone());
+      auto direction = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
+          at.getPredictorTangent()[0].clone(NOX::ShapeCopy), true);
+      *direction->getXVec() = thyraCopy(mode);
+      direction->getScalar(0) = 0.0;
+      other->setPredictorTangentDirection(*direction, 0);
+      other->scaleTangent();  // LOCA rescales the tangent to its arc-length norm: T = rho * direction
+      const auto& tangent = other->getPredictorTangent()[0];
+      const Real rho = tangent.innerProduct(*direction) / direction->innerProduct(*direction);
+      // the constraint (scaled T) . (x - x_at) = step (scaled T) . T puts the mode's component at step * rho
+      other->setPrevX(at.getX());
+      other->setStepSize(amplitude / rho);
+      other->computeX(at, tangent, amplitude / rho);
+      auto solver = NOX::Solver::buildSolver(other, noxStatusTestPtr, parsedParams->getSublist("NOX"));
+      if (solver->solve() != NOX::StatusTest::Converged)
+        throw NumericalError("the corrector did not converge (try another Switch Amplitude)");
+      state_.result->newtonIterations += solver->getNumIterations();
+      const auto& solved = dynamic_cast<const LOCA::MultiContinuation::AbstractStrategy&>(solver->getSolutionGroup());
+      PathPoint q = point(solved);
+      q.iterations = solver->getNumIterations();
+      q.residual = residualNorm(solved, owner_.model_->residualWeights());
+      assess(q);
+      q.stableByFolds = q.stable;
+      state_.result->otherBranches.push_back(q);
+    } catch (const std::exception& e) {
+      state_.result->switchFailures.push_back(std::string("branch switching: ") + e.what());
+    }
   }
 
   Continuation& owner_;
@@ -439,6 +567,7 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
   result.last.x = x;
   result.last.p = p;
   result.last.stable = segment.stableStart;
+  if (spectrum_) state.lastSpectrum = spectrum_->compute(*x, p);
   for (;;) {
     model_->clearGraphOutdated();
     if (!model_->graphCovers(*x)) model_->growGraph(*x, false);

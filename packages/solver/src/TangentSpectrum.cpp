@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -91,6 +92,15 @@ std::vector<int> nearestZero(const std::vector<Real>& values, int count) {
 }
 
 }  // namespace
+
+Real Spectrum::ordered(int k) const {
+  int computedNegative = 0;
+  for (Real v : eigenvalues) computedNegative += v < 0.0 ? 1 : 0;
+  // the computed negatives are the largest ones, eigenvalues negative - computedNegative .. negative - 1
+  const int index = k - (negative - computedNegative);
+  return index >= 0 && index < int(eigenvalues.size()) ? eigenvalues[std::size_t(index)]
+                                                        : std::numeric_limits<Real>::quiet_NaN();
+}
 
 TangentSpectrum::TangentSpectrum(Teuchos::RCP<ParameterizedModel> model, int count, int denseSize)
     : model_(std::move(model)), count_(count), denseSize_(denseSize) {
@@ -184,7 +194,6 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
   const int wanted = int(std::min<long>(count_, globalFree));
 
   Spectrum result;
-  result.mode = Teuchos::rcp(new Vector(rowMap));
   if (n <= denseSize_) {
     // every rank sums the whole matrix and solves it (LAPACK), then keeps its rows of the mode
     const int N = int(n);
@@ -210,11 +219,14 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
     for (int k = 0; k < N; ++k)
       if (w[k] < 0.5 * far) freeValues.push_back(w[k]), column.push_back(k);
     for (Real v : freeValues) result.negative += v < 0.0 ? 1 : 0;
-    for (int k : nearestZero(freeValues, wanted)) result.eigenvalues.push_back(freeValues[k]);
-    const int critical = column[nearestZero(freeValues, wanted).front()];
-    auto m = result.mode->getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (std::size_t l = 0; l < result.mode->getLocalLength(); ++l)
-      m(l, 0) = A[std::size_t(critical) * N + std::size_t(rowMap->getGlobalElement(LocalIndex(l)) - base)];
+    for (int k : nearestZero(freeValues, wanted)) {
+      result.eigenvalues.push_back(freeValues[k]);
+      auto mode = Teuchos::rcp(new Vector(rowMap));
+      auto m = mode->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (std::size_t l = 0; l < mode->getLocalLength(); ++l)
+        m(l, 0) = A[std::size_t(column[k]) * N + std::size_t(rowMap->getGlobalElement(LocalIndex(l)) - base)];
+      result.modes.push_back(mode);
+    }
   } else {
     if (!mumps_) mumps_ = std::make_unique<MumpsFactorization>(MumpsFactorization::Symmetry::Symmetric, 4);
     try {
@@ -246,11 +258,14 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
       throw NumericalError("tangent spectrum: Anasazi's Krylov-Schur found no eigenvalue in 500 restarts");
     std::vector<Real> values;
     for (int k = 0; k < solution.numVecs; ++k) values.push_back(1.0 / solution.Evals[k].realpart);
-    const auto order = nearestZero(values, wanted);
-    for (int k : order) result.eigenvalues.push_back(values[k]);
-    result.mode->update(1.0, *solution.Evecs->getVector(std::size_t(order.front())), 0.0);
+    for (int k : nearestZero(values, wanted)) {
+      result.eigenvalues.push_back(values[k]);
+      auto mode = Teuchos::rcp(new Vector(rowMap));
+      mode->update(1.0, *solution.Evecs->getVector(std::size_t(k)), 0.0);
+      result.modes.push_back(mode);
+    }
   }
-  normalizeMode(*result.mode);
+  for (auto& mode : result.modes) normalizeMode(*mode);
   return result;
 }
 

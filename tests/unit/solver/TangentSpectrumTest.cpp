@@ -55,8 +55,8 @@ TEST(TangentSpectrum, KrylovSchurAgreesWithLapackAndTheNegativeCountWithTheChain
     EXPECT_EQ(a.negative, stable ? 0 : 1);
     EXPECT_EQ(a.stable(), stable);
     unstableStates += stable ? 0 : 1;
-    EXPECT_LT(maxAbsDifference(*a.mode, *b.mode), 1e-6);
-    EXPECT_NEAR(a.mode->normInf(), 1.0, 1e-14);
+    EXPECT_LT(maxAbsDifference(*a.mode(), *b.mode()), 1e-6);
+    EXPECT_NEAR(a.mode()->normInf(), 1.0, 1e-14);
   }
   EXPECT_GE(unstableStates, 2);
 }
@@ -94,12 +94,12 @@ TEST(TangentSpectrum, TheConstrainedDofsOfAFiniteElementTangentAreLeftOut) {
   using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
   auto K = Extract::getConstTpetraOperator(W);
   assembly::Vector Kv(disc.model->map());
-  K->apply(*a.mode, Kv);
+  K->apply(*a.mode(), Kv);
   Real worstFree = 0.0, worstConstrained = 0.0;
   {
     auto A = Teuchos::rcp_dynamic_cast<const assembly::CrsMatrix>(K, true);
     auto kv = Kv.getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto v = a.mode->getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto v = a.mode()->getLocalViewHost(Tpetra::Access::ReadOnly);
     typename assembly::CrsMatrix::local_inds_host_view_type cols;
     typename assembly::CrsMatrix::values_host_view_type vals;
     for (LocalIndex r = 0; r < LocalIndex(A->getNodeNumRows()); ++r) {
@@ -123,7 +123,7 @@ TEST(TangentSpectrum, TheConstrainedDofsOfAFiniteElementTangentAreLeftOut) {
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, worstConstrained, Teuchos::outArg(constrained));
   EXPECT_LT(constrained, 1e-12);  // round-off of the dense solver; Anasazi's are exact zeros
   EXPECT_LT(free, 1e-8 * Kv.normInf());
-  EXPECT_LT(maxAbsDifference(*a.mode, *b.mode), 1e-6);
+  EXPECT_LT(maxAbsDifference(*a.mode(), *b.mode()), 1e-6);
 }
 
 }  // namespace

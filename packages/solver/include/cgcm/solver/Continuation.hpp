@@ -12,6 +12,13 @@
 //   of the Jacobian has the sign of dp/ds times that of the (regular)
 //   bordered matrix, so it changes sign exactly at folds; a path that starts
 //   stable is unstable after an odd number of folds;
+// - with a TangentSpectrum (monitorStability), stability from the tangent's
+//   eigenvalues instead: the count of negative eigenvalues at every point; a
+//   count that changes without a fold is a branch point (a simple eigenvalue
+//   crossing 0 where the path does not turn, e.g. the pitchfork of a symmetric
+//   state losing stability to an asymmetric mode), located to solver
+//   tolerance as the root of that eigenvalue along the step (TOMS 748, as for
+//   folds); switchBranch() then finds a point of the other branch;
 // - the matrix graph: when the interaction couplings of a converged point are
 //   no longer covered by the graph (or an evaluation met missing entries), the
 //   stepper stops, the graph is rebuilt and a new stepper continues from the
@@ -19,11 +26,13 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cgcm/solver/NewtonSolver.hpp"
 #include "cgcm/solver/ParameterizedModel.hpp"
+#include "cgcm/solver/TangentSpectrum.hpp"
 
 namespace cgcm::solver {
 
@@ -32,10 +41,17 @@ struct PathPoint {
   Teuchos::RCP<Vector> x;     ///< state
   std::vector<Real> p;        ///< all entries of p(0)
   Real dpds = 0.0;            ///< parameter component of the unit tangent (LOCA's scaled arclength)
-  bool stable = true;         ///< under control of the continuation parameter
+  bool stable = true;         ///< under control of the continuation parameter (from the eigenvalues when monitored)
+  bool stableByFolds = true;  ///< the same from the parity of the folds passed since the start
   bool fold = false;          ///< a located fold (dp/ds = 0 to solver tolerance)
+  bool branchPoint = false;   ///< a located branch point (an eigenvalue 0 to solver tolerance, no fold)
   int iterations = 0;         ///< Newton iterations of its corrector
   Real residual = 0.0;        ///< |f|_2 at the point (force units)
+  /// With a monitored spectrum: the tangent's eigenvalues nearest 0 and the count of negative ones (-1: not
+  /// computed); at a branch point `critical` is the mode whose eigenvalue is 0, otherwise the smallest one's.
+  std::vector<Real> eigenvalues;
+  int negativeEigenvalues = -1;
+  Teuchos::RCP<Vector> critical;
 };
 
 /// One continuation run: from a converged point, in one parameter, until the
@@ -53,6 +69,14 @@ struct ContinuationSegment {
   bool landOnly = false;
   /// Stop at the first fold, once located (the run is then not `reached`).
   bool stopAtFold = false;
+  /// With a monitored spectrum, at each located branch point: a point of the
+  /// other branch (ContinuationResult::otherBranches), the solution whose
+  /// displacement from the branch point has the component `switchAmplitude`
+  /// times the critical mode (largest entry 1) along that mode, found by
+  /// LOCA's arc-length corrector from branch point + switchAmplitude * mode
+  /// in that direction with the parameter free. Its sign picks one half of a
+  /// pitchfork. 0: no switching.
+  Real switchAmplitude = 0.0;
 };
 
 struct ContinuationResult {
@@ -64,6 +88,11 @@ struct ContinuationResult {
   int restarts = 0;               ///< stepper restarts after graph rebuilds
   int newtonIterations = 0;       ///< all corrector iterations, fold location included
   std::vector<PathPoint> folds;   ///< the folds located on the way
+  std::vector<PathPoint> branchPoints;  ///< the branch points located on the way (with a monitored spectrum)
+  /// ContinuationSegment::switchAmplitude: a point of the other branch at each branch point, in the same order
+  /// (a failed switch: no point, and `switchFailures` says why).
+  std::vector<PathPoint> otherBranches;
+  std::vector<std::string> switchFailures;
   PathPoint last;                 ///< the last converged point
 };
 
@@ -91,6 +120,11 @@ class Continuation {
   /// unknown name. Throws InputError naming them. Collective.
   void validate(const Vector& x);
 
+  /// Decides stability by the tangent's eigenvalues (`spectrum`, on the same
+  /// model) at every converged point, and locates branch points; null: by
+  /// the parity of the folds (the default).
+  void monitorStability(std::shared_ptr<TangentSpectrum> spectrum) { spectrum_ = std::move(spectrum); }
+
   /// Runs one segment from the converged point (x0, the model's current
   /// parameters). `observer` sees every new converged point in path order,
   /// located folds included (the start point is not repeated). Collective.
@@ -108,6 +142,7 @@ class Continuation {
   Teuchos::RCP<Teuchos::ParameterList> loca_;  ///< the user's list over cgcm's defaults
   Teuchos::RCP<Teuchos::ParameterList> lastParams_;
   bool print_;
+  std::shared_ptr<TangentSpectrum> spectrum_;
 };
 
 }  // namespace cgcm::solver

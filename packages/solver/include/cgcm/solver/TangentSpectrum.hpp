@@ -29,11 +29,16 @@ class MumpsFactorization;
 
 struct Spectrum {
   std::vector<Real> eigenvalues;  ///< the eigenvalues of S nearest 0, ascending (force / length)
-  int negative = 0;               ///< the number of negative eigenvalues of S (all, not only the computed ones)
-  /// The eigenvector of eigenvalues.front() (the critical mode), on the model's map, 0 on the constrained dofs,
-  /// scaled to a largest entry of +1 (sign fixed so that results are reproducible).
-  Teuchos::RCP<Vector> mode;
+  /// Their eigenvectors, on the model's map, 0 on the constrained dofs, each scaled to a largest entry of +1
+  /// (the sign fixed so that results are reproducible).
+  std::vector<Teuchos::RCP<Vector>> modes;
+  int negative = 0;  ///< the number of negative eigenvalues of S (all, not only the computed ones)
   bool stable() const { return negative == 0; }
+  /// The critical mode: the eigenvector of the smallest eigenvalue computed.
+  const Teuchos::RCP<Vector>& mode() const { return modes.front(); }
+  /// The k-th smallest eigenvalue of S (k = 0, 1, ...) when the computed ones include it (the negative
+  /// count places them in the whole spectrum), NaN otherwise.
+  Real ordered(int k) const;
 };
 
 class TangentSpectrum {
