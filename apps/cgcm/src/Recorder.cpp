@@ -92,15 +92,21 @@ Real ContactProbe::contactRadius(const Vector& u) const {
 
 Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,
                    const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
-                   const solver::Checkpoint* resume)
+                   const solver::Checkpoint* resume, int eigenvalues)
     : setup_(setup), mesh_(*disc.mesh), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
-      root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log), f_(disc.model->map()) {
+      eigenvalues_(eigenvalues), root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log),
+      f_(disc.model->map()) {
   columns_ = {"step", "u"};
   if (parameterIndex_ > 0) columns_.push_back(model_.parameterNames()[parameterIndex_]);
   columns_.push_back("P");
   if (probe_) columns_.insert(columns_.end(), {"gap", "contact_radius"});
   if (setup_.model.balance) columns_.push_back("P_lower");
   columns_.insert(columns_.end(), {"newton_iterations", "stable", "fold", "jump", "residual", "cutbacks"});
+  if (eigenvalues_ > 0) {
+    columns_.push_back("negative_eigenvalues");
+    for (int k = 1; k <= eigenvalues_; ++k) columns_.push_back("eigenvalue_" + std::to_string(k));
+    columns_.insert(columns_.end(), {"stable_by_folds", "branch_point"});
+  }
   // a new file, or (restart) the file kept up to the checkpoint's last row
   auto open = [&](const std::string& path, const std::vector<std::string>& columns) {
     return resume ? std::make_unique<io::CsvWriter>(path, columns, double(resume->curve.back().step))
@@ -114,7 +120,7 @@ Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretizati
     });
   if (exodus)
     results_ = std::make_unique<ResultsWriter>(dir + "/results.e", setup.model.mesh.get(), disc, columns_,
-                                               resume ? resume->exodusSteps : -1);
+                                               resume ? resume->exodusSteps : -1, eigenvalues_ > 0);
 }
 
 void Recorder::record(const solver::PathState& state) {
@@ -153,7 +159,14 @@ void Recorder::record(const solver::PathState& state) {
   if (setup_.model.balance) values.push_back(row.Plower);
   values.insert(values.end(), {double(row.newtonIterations), row.stable ? 1.0 : 0.0, row.fold ? 1.0 : 0.0,
                                row.jump ? 1.0 : 0.0, row.residual, double(row.cutbacks)});
-  if (results_) results_->write(x, values);
+  if (eigenvalues_ > 0) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();  // not computed (fewer converged)
+    values.push_back(state.negativeEigenvalues >= 0 ? double(state.negativeEigenvalues) : nan);
+    for (int k = 0; k < eigenvalues_; ++k)
+      values.push_back(std::size_t(k) < state.eigenvalues.size() ? state.eigenvalues[std::size_t(k)] : nan);
+    values.insert(values.end(), {state.stableByFolds ? 1.0 : 0.0, state.branchPoint ? 1.0 : 0.0});
+  }
+  if (results_) results_->write(x, values, state.critical.get());
   // the interaction force on each body at this state (the evaluation above)
   const auto forces = model_.problem().interactionForces();  // collective; empty without interaction
   if (!root_) return;
@@ -167,7 +180,7 @@ void Recorder::record(const solver::PathState& state) {
   if (probe_) extra += "  gap = " + std::to_string(row.gap);
   std::snprintf(line, sizeof line, "step %4d  u = %+.6e%s  P = %+.6e  newton %2d  |f| = %.2e%s%s%s%s\n", row.step,
                 row.u, extra.c_str(), row.P, row.newtonIterations, row.residual, row.stable ? "" : "  unstable",
-                row.fold ? "  FOLD" : "", row.jump ? "  JUMP" : "",
+                row.fold ? "  FOLD" : state.branchPoint ? "  BRANCH POINT" : "", row.jump ? "  JUMP" : "",
                 row.cutbacks ? ("  (" + std::to_string(row.cutbacks) + " cut-backs)").c_str() : "");
   log_ << line << std::flush;
 }

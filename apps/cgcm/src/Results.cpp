@@ -15,6 +15,7 @@ namespace {
 const char* const kDisplacement[] = {"displacement_x", "displacement_y", "displacement_z"};
 const char* const kTraction[] = {"traction_x", "traction_y", "traction_z"};
 const char* const kInteractionForce[] = {"interaction_force_x", "interaction_force_y", "interaction_force_z"};
+const char* const kCriticalMode[] = {"critical_mode_x", "critical_mode_y", "critical_mode_z"};
 
 // Stress components written per formulation, as (name, i, j) of the 3x3 Cauchy stress.
 struct Component {
@@ -58,11 +59,12 @@ bool cellStress(const mesh::Mesh& m, const LocalIndex* nodes, const std::vector<
 }  // namespace
 
 ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const solver::Discretization& disc,
-                             const std::vector<std::string>& globals, int keptSteps)
+                             const std::vector<std::string>& globals, int keptSteps, bool criticalMode)
     : mesh_(mesh),
       disc_(disc),
       globals_(globals),
       root_(disc.dofs->comm()->getRank() == 0),
+      criticalMode_(criticalMode),
       gather_(disc.dofs->ownedMap()) {
   io::ExodusVariables vars;
   const int dim = disc.dofs->dofsPerNode();
@@ -72,6 +74,8 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, co
     vars.nodal.push_back("pressure");
     for (int i = 0; i < dim; ++i) vars.nodal.push_back(kInteractionForce[i]);
   }
+  if (criticalMode_)
+    for (int i = 0; i < dim; ++i) vars.nodal.push_back(kCriticalMode[i]);
   for (const auto& c : stressComponents(disc.problem->formulation())) vars.element.push_back(c.name);
   vars.element.insert(vars.element.end(), {"J", "von_mises"});
   vars.global = globals;
@@ -82,17 +86,28 @@ ResultsWriter::ResultsWriter(const std::string& path, const mesh::Mesh* mesh, co
   });
 }
 
-void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals) {
+void ResultsWriter::write(const assembly::Vector& x, const std::vector<double>& globals, const assembly::Vector* mode) {
   const bool interacting = disc_.problem->hasInteraction();
   // by dof id = global node id * dim + i; the interaction force of the state x, whichever method
   const std::vector<Real> forceByNode =
       interacting ? gather_.gather(*disc_.problem->interactionNodeForces(x)) : std::vector<Real>{};
+  const std::vector<Real> modeByNode =
+      criticalMode_ && mode ? gather_.gather(*mode) : std::vector<Real>{};
   const std::vector<Real> uByNode = gather_.gather(x);
   if (!root_) return;
   const std::vector<Real> u = inMeshOrder(uByNode);
   io::ExodusWriter::Fields nodal, element;
   displacementAndStress(u, nodal, element);
   if (interacting) interactionFields(u, inMeshOrder(forceByNode), nodal);
+  if (criticalMode_) {
+    const int dim = mesh_->dim;
+    const std::vector<Real> m = inMeshOrder(modeByNode);
+    for (int i = 0; i < dim; ++i) {
+      auto& field = nodal[kCriticalMode[i]];
+      field.assign(std::size_t(mesh_->numNodes()), 0.0);
+      for (LocalIndex n = 0; !m.empty() && n < mesh_->numNodes(); ++n) field[std::size_t(n)] = m[std::size_t(n) * dim + i];
+    }
+  }
   io::ExodusWriter::Scalars scalars;
   for (std::size_t k = 0; k < globals_.size(); ++k) scalars[globals_[k]] = globals[k];
   writer_->writeStep(writer_->numSteps() + 1, nodal, element, scalars);

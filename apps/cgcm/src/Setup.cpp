@@ -73,6 +73,14 @@ RCP<const ParameterList> validParameters() {
              "MB a run may use; a deck whose estimated memory (mesh size, measured per-unknown cost of the "
              "solver) exceeds it is refused before any work. 0: the memory this machine has available",
              atLeast(0.0));
+  output.set("Eigenvalues", 0,
+             "n > 0: at every accepted state the n eigenvalues nearest 0 of the tangent's symmetric part on the "
+             "free dofs (force/length; Anasazi, with one MUMPS LDL^T factorisation per state) and the count of "
+             "its negative eigenvalues (exact, from the factorisation), which then decides `stable`; the "
+             "critical mode (critical_mode_* in results.e) and, on arc-length paths, branch points (an "
+             "eigenvalue crossing 0 without a fold) located to solver tolerance. 0: stability from the parity "
+             "of the folds passed (cheaper, blind to branch points)",
+             validators::intBetween(0, 50));
   output.set("Checkpoint", true,
              "write checkpoint.bin after every accepted state (displacement control), so that "
              "`cgcm --restart <Directory>` can continue a run that was killed");

@@ -270,10 +270,12 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
                                                    std::to_string(resume->stepper.step) + ")" : "") << "\n";
 
   // Follow the path, recording every accepted state (a checkpoint after each, under displacement control).
+  const int eigenvalues = out.get<int>("Eigenvalues");
   Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), model->parameterIndex(plan.parameter()),
-                    printSteps, log, resume ? &*resume : nullptr);
+                    printSteps, log, resume ? &*resume : nullptr, eigenvalues);
   Real lastDisplacement = resume ? resume->lastDisplacement : plan.path().path.front();  // of the last state that was no fold
   solver::PathContext context = pathContext(disc, newton, continuation, resume, previous);
+  if (eigenvalues > 0) context.spectrum = std::make_shared<solver::TangentSpectrum>(model, eigenvalues);
   if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(dir, recorder, gather, lastDisplacement, root);
   if (probe) context.continuity = continuityCheck(*probe, *model, lastDisplacement, 0.05 * setup.interaction->potential->r0());
   const auto runStart = std::chrono::steady_clock::now();

@@ -58,7 +58,12 @@ struct Continuation::RunState {
   Real lastStepSize = 0.0;    ///< arclength of the last step (signed)
   bool atFold = false;        ///< a fold was located and the segment stops there
   bool haveLast = false;
-  Spectrum lastSpectrum{{}, {}, -1};      ///< at the last converged point (a monitored spectrum; negative = -1: none yet)
+  Spectrum lastSpectrum = notYet();  ///< at the last converged point (a monitored spectrum; negative = -1: none yet)
+  static Spectrum notYet() {
+    Spectrum s;
+    s.negative = -1;
+    return s;
+  }
 };
 
 // LOCA's stepper with cgcm's bookkeeping: every converged point goes to the
@@ -126,7 +131,7 @@ class PathStepper : public LOCA::Stepper {
       state_.stable = !state_.stable;
     }
     pt.stable = pt.stableByFolds = pt.fold || state_.stable;
-    if (owner_.spectrum_) {
+    if (monitored()) {
       const Spectrum sB = assess(pt);
       // an eigenvalue crossed 0 where the path did not turn: a branch point between A and B
       const Spectrum& sA = state_.lastSpectrum;
@@ -179,7 +184,7 @@ class PathStepper : public LOCA::Stepper {
       PathPoint pt = point(*curGroupPtr);
       pt.dpds = state_.lastDpds;
       pt.stable = pt.stableByFolds = state_.stable;
-      if (owner_.spectrum_) assess(pt);
+      if (monitored()) assess(pt);
       pt.iterations = solverPtr->getNumIterations();
       pt.residual = residualNorm(solverPtr->getSolutionGroup(), owner_.model_->residualWeights());
       state_.result->newtonIterations += pt.iterations;
@@ -249,7 +254,6 @@ class PathStepper : public LOCA::Stepper {
   // vanishes, each trial an arc-length corrector solve from A along A's
   // tangent. Reports the fold and flips the stability; false if no trial converged.
   bool locateFold(Real dA, Real dB) {
-    const Real h = stepSize;
     auto trial = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(prevGroupPtr->clone());
     Real bestAbs = std::abs(dA) < std::abs(dB) ? std::abs(dA) : std::abs(dB);
     PathPoint best;
@@ -280,7 +284,7 @@ class PathStepper : public LOCA::Stepper {
     if (!haveBest) return false;
     best.fold = true;
     best.stable = best.stableByFolds = true;  // marginal: the end of a stable branch or the start of one
-    if (owner_.spectrum_) assess(best);
+    if (monitored()) assess(best);
     state_.result->folds.push_back(best);
     report(best);
     state_.stable = !state_.stable;
@@ -313,6 +317,9 @@ class PathStepper : public LOCA::Stepper {
     if (!pt.fold && !pt.branchPoint) pt.stable = s.stable();
     return s;
   }
+
+  // The spectrum is assessed at every point, except in a jump (only its end matters).
+  bool monitored() const { return owner_.spectrum_ && !state_.segment->landOnly; }
 
   // The mode of the eigenvalue nearest 0.
   static const Teuchos::RCP<Vector>& nearestZeroMode(const Spectrum& s) {
@@ -567,7 +574,7 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
   result.last.x = x;
   result.last.p = p;
   result.last.stable = segment.stableStart;
-  if (spectrum_) state.lastSpectrum = spectrum_->compute(*x, p);
+  if (spectrum_ && !segment.landOnly) state.lastSpectrum = spectrum_->compute(*x, p);
   for (;;) {
     model_->clearGraphOutdated();
     if (!model_->graphCovers(*x)) model_->growGraph(*x, false);

@@ -19,8 +19,9 @@ namespace cgcm::solver {
 class MumpsFactorization {
  public:
   enum class Symmetry { General, Symmetric };
-  /// `ordering`: MUMPS' ICNTL(7) (0 AMD, 4 PORD).
-  MumpsFactorization(Symmetry symmetry, int ordering) : symmetry_(symmetry), ordering_(ordering) {}
+  /// `ordering`: MUMPS' ICNTL(7) (0 AMD, 4 PORD); `determinant`: compute the determinant's sign too.
+  MumpsFactorization(Symmetry symmetry, int ordering, bool determinant = false)
+      : symmetry_(symmetry), ordering_(ordering), determinant_(determinant) {}
   ~MumpsFactorization() { release(); }
   MumpsFactorization(const MumpsFactorization&) = delete;
   MumpsFactorization& operator=(const MumpsFactorization&) = delete;
@@ -40,6 +41,10 @@ class MumpsFactorization {
   /// Symmetric: the number of negative pivots of the last factorisation, which
   /// is the number of negative eigenvalues of the matrix (Sylvester's law of inertia).
   int negativePivots() const;
+  /// With `determinant`: the sign of the last factorised matrix's determinant (+1, -1; 0 if singular).
+  int determinantSign() const;
+
+  Symmetry symmetry() const { return symmetry_; }
 
   GlobalIndex size() const { return n_; }
 
@@ -48,6 +53,7 @@ class MumpsFactorization {
 
   Symmetry symmetry_;
   int ordering_;
+  bool determinant_;
   mutable DMUMPS_STRUC_C id_{};
   bool initialized_ = false;
   GlobalIndex n_ = 0;

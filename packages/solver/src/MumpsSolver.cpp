@@ -169,6 +169,7 @@ void MumpsFactorization::factorize(const Teuchos::RCP<const Map>& rangeMap, cons
     icntl(id_, 7) = ordering_;
     // the root front factorised by MUMPS itself, not ScaLAPACK: only then is INFOG(12) the count of negative pivots
     if (symmetry_ == Symmetry::Symmetric) icntl(id_, 13) = 1;
+    if (determinant_) icntl(id_, 33) = 1;  // RINFOG(12) * 2^INFOG(34)
     n_ = n;
     irn_ = std::move(irn);
     jcn_ = std::move(jcn);
@@ -216,6 +217,11 @@ void MumpsFactorization::solve(const MultiVector& b, MultiVector& x) const {
 }
 
 int MumpsFactorization::negativePivots() const { return infog(id_, 12); }
+
+int MumpsFactorization::determinantSign() const {
+  const Real mantissa = id_.rinfog[11];  // RINFOG(12)
+  return mantissa > 0.0 ? 1 : mantissa < 0.0 ? -1 : 0;
+}
 
 void MumpsFactorization::release() {
   if (!initialized_) return;

@@ -61,7 +61,7 @@ class ArcLengthControl final : public PathFollower {
     int step = 0;
     bool stable = true;
     const auto track = [&](const PathState& s) {
-      stable = s.stable;
+      stable = s.stableByFolds;
       observer(s);
     };
     for (std::size_t k = 1; k < waypoints.size(); ++k) {
@@ -201,7 +201,12 @@ PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vect
     s.iterations = pt.iterations;
     s.residual = pt.residual;
     s.stable = pt.stable;
+    s.stableByFolds = pt.stableByFolds;
     s.fold = pt.fold;
+    s.branchPoint = pt.branchPoint;
+    s.eigenvalues = pt.eigenvalues;
+    s.negativeEigenvalues = pt.negativeEigenvalues;
+    s.critical = pt.critical;
     observer(s);
   });
   PathCost cost{r.steps, r.restarts};
@@ -214,10 +219,19 @@ PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vect
 PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observer& observer) const {
   int step = c.resume ? c.resume->step : 0;
   bool stable = true;
+  if (c.continuation) c.continuation->monitorStability(c.spectrum);
   const auto track = [&](const PathState& s) {
     step = s.step;
-    stable = s.stable;
-    observer(s);
+    stable = s.stableByFolds;
+    if (!c.spectrum || s.negativeEigenvalues >= 0) return observer(s);
+    // a state the continuation did not assess (displacement control, the start of a path)
+    PathState assessed = s;
+    const Spectrum spectrum = c.spectrum->compute(*s.x, s.p);
+    assessed.eigenvalues = spectrum.eigenvalues;
+    assessed.negativeEigenvalues = spectrum.negative;
+    assessed.critical = spectrum.mode();
+    if (!s.fold) assessed.stable = spectrum.stable();
+    observer(assessed);
   };
   PathCost cost = follower_->follow(u, *this, c, track);
   if (parameter_ == "u") return cost;

@@ -6,10 +6,12 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_RowMatrixTransposer.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -81,13 +83,14 @@ void normalizeMode(Vector& v) {
   v.scale((globalSign < 0.0 ? -1.0 : 1.0) / globalBig);
 }
 
-// The `count` entries of `values` nearest 0 (indices), ascending by value.
-std::vector<int> nearestZero(const std::vector<Real>& values, int count) {
-  std::vector<int> index(values.size());
+// The `count` eigenvalues (re + i im) nearest 0 (indices), ascending by real part.
+std::vector<std::size_t> nearestZero(const std::vector<Real>& re, const std::vector<Real>& im, int count) {
+  std::vector<std::size_t> index(re.size());
   std::iota(index.begin(), index.end(), 0);
-  std::stable_sort(index.begin(), index.end(), [&](int a, int b) { return std::abs(values[a]) < std::abs(values[b]); });
+  std::stable_sort(index.begin(), index.end(),
+                   [&](std::size_t a, std::size_t b) { return std::hypot(re[a], im[a]) < std::hypot(re[b], im[b]); });
   index.resize(std::min<std::size_t>(index.size(), std::size_t(count)));
-  std::sort(index.begin(), index.end(), [&](int a, int b) { return values[a] < values[b]; });
+  std::stable_sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) { return re[a] < re[b]; });
   return index;
 }
 
@@ -145,22 +148,24 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
   }
   unitColumn.doImport(unitRow, assembly::Import(rowMap, colMap), Tpetra::INSERT);
 
-  // S's coordinates: the free rows' lower triangle, each off-diagonal K_ij counted half at (max, min) (MUMPS sums
-  // the two halves); a constrained dof gets a diagonal far from 0 that no eigenvalue asked for can reach
+  // K_FF's coordinates (a constrained dof gets a diagonal far from 0 that no eigenvalue asked for can reach), and
+  // whether K_FF is symmetric: the largest |K_ij - K_ji| of the free entries against the largest |K_ij|
   const GlobalIndex base = rowMap->getMinAllGlobalIndex();
   const GlobalIndex n = GlobalIndex(rowMap->getGlobalNumElements());
   if (rowMap->getMaxAllGlobalIndex() - base + 1 != n)
     throw NumericalError("tangent spectrum: the matrix rows are not numbered contiguously");
+  const auto KT = Tpetra::RowMatrixTransposer<Real, LocalIndex, GlobalIndex, assembly::Node>(K).createTranspose();
   std::vector<int> irn, jcn;
   std::vector<Real> val;
   std::vector<GlobalIndex> constrained;
-  Real maxDiagonal = 0.0;
+  Real maxDiagonal = 0.0, maxEntry = 0.0, maxAsymmetry = 0.0;
   long free = 0;
   {
     const auto rowMask = unitRow.getLocalViewHost(Tpetra::Access::ReadOnly);
     const auto colMask = unitColumn.getLocalViewHost(Tpetra::Access::ReadOnly);
-    typename CrsMatrix::local_inds_host_view_type cols;
-    typename CrsMatrix::values_host_view_type vals;
+    typename CrsMatrix::local_inds_host_view_type cols, colsT;
+    typename CrsMatrix::values_host_view_type vals, valsT;
+    std::vector<std::pair<GlobalIndex, Real>> transposed;
     for (LocalIndex r = 0; r < LocalIndex(K->getNodeNumRows()); ++r) {
       const GlobalIndex gi = rowMap->getGlobalElement(r);
       if (rowMask(r, 0) != 0.0) {
@@ -168,84 +173,111 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
         continue;
       }
       ++free;
+      // row gi of K^T, by global column
+      const LocalIndex rT = KT->getRowMap()->getLocalElement(gi);
+      KT->getLocalRowView(rT, colsT, valsT);
+      transposed.clear();
+      for (std::size_t k = 0; k < colsT.extent(0); ++k)
+        transposed.push_back({KT->getColMap()->getGlobalElement(colsT(k)), valsT(k)});
+      std::sort(transposed.begin(), transposed.end());
       K->getLocalRowView(r, cols, vals);
       for (std::size_t k = 0; k < cols.extent(0); ++k) {
         if (colMask(cols(k), 0) != 0.0) continue;
         const GlobalIndex gj = colMap->getGlobalElement(cols(k));
         if (gi == gj) maxDiagonal = std::max(maxDiagonal, std::abs(vals(k)));
-        irn.push_back(int(std::max(gi, gj) - base + 1));
-        jcn.push_back(int(std::min(gi, gj) - base + 1));
-        val.push_back(gi == gj ? vals(k) : 0.5 * vals(k));
+        maxEntry = std::max(maxEntry, std::abs(vals(k)));
+        const auto t = std::lower_bound(transposed.begin(), transposed.end(), std::make_pair(gj, -HUGE_VAL));
+        const Real kji = t != transposed.end() && t->first == gj ? t->second : 0.0;
+        maxAsymmetry = std::max(maxAsymmetry, std::abs(vals(k) - kji));
+        irn.push_back(int(gi - base + 1));
+        jcn.push_back(int(gj - base + 1));
+        val.push_back(vals(k));
       }
     }
   }
   const auto& comm = *rowMap->getComm();
-  Real globalMaxDiagonal = 0.0;
+  Real globalMax[3] = {0.0, 0.0, 0.0};
+  const Real localMax[3] = {maxDiagonal, maxEntry, maxAsymmetry};
   long globalFree = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxDiagonal, Teuchos::outArg(globalMaxDiagonal));
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 3, localMax, globalMax);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, free, Teuchos::outArg(globalFree));
   if (globalFree == 0) throw NumericalError("tangent spectrum: every dof is constrained");
-  const Real far = 1e3 * std::max(globalMaxDiagonal, 1e-300);
+  Spectrum result;
+  result.symmetric = globalMax[2] <= kSymmetryTolerance * globalMax[1];
+  const Real far = 1e3 * std::max(globalMax[0], 1e-300);
   for (GlobalIndex g : constrained) {
     irn.push_back(int(g - base + 1));
     jcn.push_back(int(g - base + 1));
     val.push_back(far);
   }
+  if (result.symmetric) {
+    // the lower triangle: each off-diagonal pair counted half at (max, min) (MUMPS sums the two halves)
+    for (std::size_t k = 0; k < irn.size(); ++k)
+      if (irn[k] != jcn[k]) {
+        if (irn[k] < jcn[k]) std::swap(irn[k], jcn[k]);
+        val[k] *= 0.5;
+      }
+  }
   const int wanted = int(std::min<long>(count_, globalFree));
 
-  Spectrum result;
+  std::vector<Real> re, im;                  // eigenvalues found
+  std::vector<Teuchos::RCP<Vector>> vectors;  // their eigenvectors (real parts)
   if (n <= denseSize_) {
-    // every rank sums the whole matrix and solves it (LAPACK), then keeps its rows of the mode
+    // every rank sums the whole matrix and solves it (LAPACK)
     const int N = int(n);
-    std::vector<Real> local(std::size_t(N) * N, 0.0), A(local.size(), 0.0);
+    std::vector<Real> local(std::size_t(N) * N, 0.0), A(local.size(), 0.0);  // column-major
     for (std::size_t k = 0; k < irn.size(); ++k) {
       const int i = irn[k] - 1, j = jcn[k] - 1;
-      local[std::size_t(i) * N + j] += val[k];
-      if (i != j) local[std::size_t(j) * N + i] += val[k];
+      local[std::size_t(j) * N + i] += val[k];
+      if (result.symmetric && i != j) local[std::size_t(i) * N + j] += val[k];
     }
     Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(local.size()), local.data(), A.data());
-    std::vector<Real> w(N);
-    int info = 0, lwork = -1;
-    Real query = 0.0;
+    std::vector<Real> wr(N), wi(N, 0.0), V;
+    int info = 0;
     Teuchos::LAPACK<int, Real> lapack;
-    lapack.SYEV('V', 'U', N, A.data(), N, w.data(), &query, lwork, &info);
-    lwork = int(query);
-    std::vector<Real> work(std::size_t(std::max(lwork, 1)));
-    lapack.SYEV('V', 'U', N, A.data(), N, w.data(), work.data(), lwork, &info);
-    if (info != 0) throw NumericalError("tangent spectrum: LAPACK dsyev failed (info = " + std::to_string(info) + ")");
-    // the constrained dofs' eigenvalues (far) are not the system's
-    std::vector<Real> freeValues;
-    std::vector<int> column;
-    for (int k = 0; k < N; ++k)
-      if (w[k] < 0.5 * far) freeValues.push_back(w[k]), column.push_back(k);
-    for (Real v : freeValues) result.negative += v < 0.0 ? 1 : 0;
-    for (int k : nearestZero(freeValues, wanted)) {
-      result.eigenvalues.push_back(freeValues[k]);
-      auto mode = Teuchos::rcp(new Vector(rowMap));
-      auto m = mode->getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (std::size_t l = 0; l < mode->getLocalLength(); ++l)
-        m(l, 0) = A[std::size_t(column[k]) * N + std::size_t(rowMap->getGlobalElement(LocalIndex(l)) - base)];
-      result.modes.push_back(mode);
+    if (result.symmetric) {
+      int lwork = 3 * N;
+      std::vector<Real> work(static_cast<std::size_t>(lwork));
+      lapack.SYEV('V', 'U', N, A.data(), N, wr.data(), work.data(), lwork, &info);
+      V = A;
+    } else {
+      int lwork = 8 * N;
+      std::vector<Real> work(static_cast<std::size_t>(lwork)), vl(1);
+      V.resize(std::size_t(N) * N);
+      lapack.GEEV('N', 'V', N, A.data(), N, wr.data(), wi.data(), vl.data(), 1, V.data(), N, work.data(), lwork, &info);
     }
+    if (info != 0) throw NumericalError("tangent spectrum: LAPACK failed (info = " + std::to_string(info) + ")");
+    for (int k = 0; k < N; ++k) {
+      if (wi[k] == 0.0 && std::abs(wr[k] - far) <= 1e-8 * far) continue;  // a constrained dof's
+      re.push_back(wr[k]);
+      im.push_back(wi[k]);
+      auto v = Teuchos::rcp(new Vector(rowMap));  // GEEV: a complex pair's real part is column k (the first of two)
+      const int column = wi[k] < 0.0 ? k - 1 : k;
+      auto m = v->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (std::size_t l = 0; l < v->getLocalLength(); ++l)
+        m(l, 0) = V[std::size_t(column) * N + std::size_t(rowMap->getGlobalElement(LocalIndex(l)) - base)];
+      vectors.push_back(v);
+    }
+    for (std::size_t k = 0; k < re.size(); ++k) result.negative += re[k] < 0.0 ? 1 : 0;
   } else {
-    if (!mumps_) mumps_ = std::make_unique<MumpsFactorization>(MumpsFactorization::Symmetry::Symmetric, 4);
+    const auto symmetry = result.symmetric ? MumpsFactorization::Symmetry::Symmetric : MumpsFactorization::Symmetry::General;
+    if (!mumps_ || mumps_->symmetry() != symmetry) mumps_ = std::make_unique<MumpsFactorization>(symmetry, 4, true);
     try {
       mumps_->factorize(rowMap, rowMap, n, base, std::move(irn), std::move(jcn), std::move(val));
     } catch (const std::runtime_error& e) {
       throw NumericalError(std::string("tangent spectrum: ") + e.what());
     }
-    result.negative = mumps_->negativePivots();
     using MV = MultiVector;
     using OP = Operator;
     auto start = Teuchos::rcp(new MV(rowMap, 1));
     startVector(*start);
     auto problem = Teuchos::rcp(new Anasazi::BasicEigenproblem<Real, MV, OP>(
         Teuchos::rcp(new InverseOperator(*mumps_, rowMap)), start));
-    problem->setHermitian(true);
+    problem->setHermitian(result.symmetric);
     problem->setNEV(wanted);
     if (!problem->setProblem()) throw NumericalError("tangent spectrum: Anasazi refused the eigenproblem");
     Teuchos::ParameterList settings;
-    settings.set("Which", "LM");  // of S^-1: the eigenvalues of S nearest 0
+    settings.set("Which", "LM");  // of K_FF^-1: the eigenvalues of K_FF nearest 0
     settings.set("Block Size", 1);
     settings.set("Num Blocks", int(std::min<long>(std::max(3 * wanted, 20), globalFree)));
     settings.set("Maximum Restarts", 500);
@@ -256,14 +288,31 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
     const auto& solution = problem->getSolution();
     if (solution.numVecs < 1)
       throw NumericalError("tangent spectrum: Anasazi's Krylov-Schur found no eigenvalue in 500 restarts");
-    std::vector<Real> values;
-    for (int k = 0; k < solution.numVecs; ++k) values.push_back(1.0 / solution.Evals[k].realpart);
-    for (int k : nearestZero(values, wanted)) {
-      result.eigenvalues.push_back(values[k]);
-      auto mode = Teuchos::rcp(new Vector(rowMap));
-      mode->update(1.0, *solution.Evecs->getVector(std::size_t(k)), 0.0);
-      result.modes.push_back(mode);
+    for (int k = 0; k < solution.numVecs; ++k) {
+      // theta = 1 / lambda; a complex pair's vectors are its real and imaginary parts (index +1, -1)
+      const std::complex<Real> lambda = 1.0 / std::complex<Real>(solution.Evals[k].realpart, solution.Evals[k].imagpart);
+      re.push_back(lambda.real());
+      im.push_back(lambda.imag());
+      const int column = !solution.index.empty() && solution.index[std::size_t(k)] < 0 ? k - 1 : k;
+      auto v = Teuchos::rcp(new Vector(rowMap));
+      v->update(1.0, *solution.Evecs->getVector(std::size_t(column)), 0.0);
+      vectors.push_back(v);
     }
+    if (result.symmetric) {
+      result.negative = mumps_->negativePivots();  // exact: Sylvester's law of inertia
+    } else {
+      // the negative real parts found; det K_FF has the sign (-1)^(number of negative real eigenvalues): if the
+      // parity differs, one more lies beyond those computed
+      for (std::size_t k = 0; k < re.size(); ++k) result.negative += re[k] < 0.0 ? 1 : 0;
+      int realNegative = 0;
+      for (std::size_t k = 0; k < re.size(); ++k) realNegative += re[k] < 0.0 && im[k] == 0.0 ? 1 : 0;
+      if ((mumps_->determinantSign() < 0) != (realNegative % 2 == 1)) ++result.negative, result.complete = false;
+    }
+  }
+  for (std::size_t k : nearestZero(re, im, wanted)) {
+    result.eigenvalues.push_back(re[k]);
+    result.imaginaryParts.push_back(im[k]);
+    result.modes.push_back(vectors[k]);
   }
   for (auto& mode : result.modes) normalizeMode(*mode);
   return result;

@@ -47,9 +47,11 @@ class Recorder {
   /// `resume` (a restart): continues the files of `dir` after the checkpoint's
   /// last row (later rows, written after it, are dropped) and starts the curve
   /// with the checkpoint's rows.
+  /// `eigenvalues` (Output/Eigenvalues): the columns negative_eigenvalues, eigenvalue_1 .. _n,
+  /// stable_by_folds and branch_point, and the critical mode in results.e; 0: none.
   Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,
            const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
-           const solver::Checkpoint* resume = nullptr);
+           const solver::Checkpoint* resume = nullptr, int eigenvalues = 0);
 
   /// Steps in results.e so far (rank 0; 0 without Exodus output).
   int exodusSteps() const { return results_ ? results_->numSteps() : 0; }
@@ -64,7 +66,7 @@ class Recorder {
   const mesh::Mesh& mesh_;  ///< the mesh the problem assembles (solver::Discretization::mesh)
   solver::ModelEvaluator& model_;
   const ContactProbe* probe_;
-  int parameterIndex_;
+  int parameterIndex_, eigenvalues_;
   bool root_, print_;
   std::ostream& log_;
   assembly::Vector f_;

@@ -12,7 +12,9 @@
 // the interaction force on every node, interaction_force_x/_y(/_z)
 // (Problem::interactionNodeForces: Method 1's is a body force, on the
 // interior nodes too, whose share the traction leaves out; summed over a
-// body it is the body's row of body_forces.csv); the load-curve columns as
+// body it is the body's row of body_forces.csv); with Output/Eigenvalues the
+// critical mode of the tangent (critical_mode_x/_y(/_z), largest entry 1,
+// TangentSpectrum); the load-curve columns as
 // global variables. The state is gathered to rank 0, which evaluates the
 // fields on the whole mesh (the set-up's, of which a rank may assemble only a
 // subdomain) and writes the file.
@@ -35,14 +37,15 @@ class ResultsWriter {
   /// steps (a restart). Throws InputError (rank 0) if it cannot be created
   /// or continued. Collective.
   ResultsWriter(const std::string& path, const mesh::Mesh* mesh, const solver::Discretization& disc,
-                const std::vector<std::string>& globals, int keptSteps = -1);
+                const std::vector<std::string>& globals, int keptSteps = -1, bool criticalMode = false);
 
   /// Steps written to the file so far (rank 0; 0 elsewhere).
   int numSteps() const { return writer_ ? writer_->numSteps() : 0; }
 
   /// Appends the state x with the globals' values (in the constructor's
-  /// order) as step time = number of the step, flushed. Collective.
-  void write(const assembly::Vector& x, const std::vector<double>& globals);
+  /// order) and, when the file has the field, the critical mode (null: zero)
+  /// as step time = number of the step, flushed. Collective.
+  void write(const assembly::Vector& x, const std::vector<double>& globals, const assembly::Vector* mode = nullptr);
 
  private:
   void displacementAndStress(const std::vector<Real>& u, io::ExodusWriter::Fields& nodal,
@@ -58,7 +61,7 @@ class ResultsWriter {
   const mesh::Mesh* mesh_;  ///< the whole mesh (rank 0)
   const solver::Discretization& disc_;
   std::vector<std::string> globals_;
-  bool root_;
+  bool root_, criticalMode_;
   solver::RootGather gather_;
   std::unique_ptr<io::ExodusWriter> writer_;
 };

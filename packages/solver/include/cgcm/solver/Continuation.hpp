@@ -65,7 +65,7 @@ struct ContinuationSegment {
   Real initialStep = 1e-3;  ///< size of the first parameter increment (> 0)
   bool stableStart = true;  ///< stability of the start point
   /// Only the end matters (a jump under displacement control): the first fold
-  /// is located, later ones only counted.
+  /// is located, later ones only counted; a monitored spectrum is not computed.
   bool landOnly = false;
   /// Stop at the first fold, once located (the run is then not `reached`).
   bool stopAtFold = false;

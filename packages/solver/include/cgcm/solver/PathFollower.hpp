@@ -27,9 +27,16 @@ struct PathState {
   int iterations = 0;         ///< Newton iterations of its solve (or corrector)
   Real residual = 0.0;        ///< |f|_2 of the accepted state (force units)
   int cutbacks = 0;           ///< failed attempts before it (displacement control)
-  bool stable = true;         ///< under control of the continuation parameter
+  bool stable = true;         ///< under control of the continuation parameter (from the eigenvalues when computed)
+  bool stableByFolds = true;  ///< the same from the parity of the folds passed (arc-length), or true (displacement control)
   bool fold = false;          ///< a located fold (turning point of the path)
+  bool branchPoint = false;   ///< a located branch point (an eigenvalue crossing 0 without a fold)
   bool jump = false;          ///< reached by a jump from a fold (displacement control)
+  /// PathContext::spectrum: the tangent's eigenvalues nearest 0, the count of negative ones (-1: not
+  /// computed) and the critical mode (TangentSpectrum).
+  std::vector<Real> eigenvalues;
+  int negativeEigenvalues = -1;
+  Teuchos::RCP<const Vector> critical;
 };
 
 /// What a path costs besides Newton's solves.
@@ -48,6 +55,9 @@ struct PathContext {
   LoadStepper::CheckpointSink checkpoint;   ///< may be empty
   const StepperState* resume = nullptr;     ///< a restart: where the interrupted run stood
   const Vector* resumePrevious = nullptr;   ///< and the state before it (resume->havePrevious)
+  /// Stability from the tangent's eigenvalues at every accepted state, branch points located on
+  /// arc-length paths (the continuation monitors the same spectrum); null: from the parity of folds.
+  std::shared_ptr<TangentSpectrum> spectrum;
 };
 
 class PathPlan;
