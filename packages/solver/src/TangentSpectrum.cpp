@@ -113,8 +113,10 @@ TangentSpectrum::TangentSpectrum(Teuchos::RCP<ParameterizedModel> model, int cou
 TangentSpectrum::~TangentSpectrum() = default;
 
 Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
-  // the tangent at (x, p)
-  if (W_.is_null()) W_ = model_->create_W_op();
+  // the tangent at (x, p), on a matrix graph that holds the couplings of x (the path's solver last assembled one
+  // at an earlier iterate)
+  if (!model_->graphCovers(x)) model_->growGraph(x, false);
+  W_ = model_->create_W_op();
   auto in = model_->createInArgs();
   auto xCopy = Teuchos::rcp(new Vector(x, Teuchos::Copy));
   in.set_x(Thyra::createConstVector<Real, LocalIndex, GlobalIndex, assembly::Node>(
@@ -125,7 +127,15 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
   in.set_p(0, pv);
   auto out = model_->createOutArgs();
   out.set_W_op(W_);
-  model_->evalModel(in, out);
+  try {
+    model_->evalModel(in, out);
+  } catch (const NumericalError&) {
+    if (!model_->graphOutdated()) throw;
+    model_->growGraph(x, true);  // couplings beyond the search radius: a wider graph, once
+    W_ = model_->create_W_op();
+    out.set_W_op(W_);
+    model_->evalModel(in, out);
+  }
   auto K = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(W_), true);
 
   // the constrained dofs: unit rows (diagonal 1, every other entry 0), also as columns

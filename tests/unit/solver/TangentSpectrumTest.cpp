@@ -8,6 +8,7 @@
 #include <Tpetra_Core.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 #include "ChainModel.hpp"
 #include "TestSystem.hpp"
@@ -124,6 +125,35 @@ TEST(TangentSpectrum, TheConstrainedDofsOfAFiniteElementTangentAreLeftOut) {
   EXPECT_LT(constrained, 1e-12);  // round-off of the dense solver; Anasazi's are exact zeros
   EXPECT_LT(free, 1e-8 * Kv.normInf());
   EXPECT_LT(maxAbsDifference(*a.mode(), *b.mode()), 1e-6);
+}
+
+// Method 3's tangent is not symmetric: its eigenvalues by Anasazi's non-Hermitian Krylov-Schur against LAPACK's
+// dgeev, on the benchmark (plane strain, coarse) at the undeformed state, the bodies at the equilibrium gap.
+TEST(TangentSpectrum, TheUnsymmetricTangentOfMethod3) {
+  auto d = Teuchos::rcp(new Teuchos::ParameterList("cgcm"));
+  io::applyOverrides(*d, *test::deckParameters(), {"Problem/Formulation=plane strain", "Geometry/Mesh Refinement=-1"});
+  io::validateDeck(*d, *test::deckParameters());
+  const auto setup = test::setupOf(*d);
+  auto disc = solver::discretize(Tpetra::getDefaultComm(), setup, d->sublist("Solver").sublist("Linear Solver"));
+  assembly::Vector x(disc.model->map());
+  const auto p = disc.model->parameters();
+  solver::TangentSpectrum krylov(disc.model, 4, 0), dense(disc.model, 4, 100000);
+  const auto a = krylov.compute(x, p), b = dense.compute(x, p);
+  EXPECT_FALSE(a.symmetric);
+  EXPECT_FALSE(b.symmetric);
+  ASSERT_EQ(a.eigenvalues.size(), 4u);
+  ASSERT_EQ(b.eigenvalues.size(), 4u);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(a.eigenvalues[k], b.eigenvalues[k], 1e-8 * std::abs(b.eigenvalues[k]));
+    EXPECT_NEAR(a.imaginaryParts[k], b.imaginaryParts[k], 1e-8 * std::abs(b.eigenvalues[k]));
+  }
+  EXPECT_EQ(a.negative, b.negative);
+  EXPECT_TRUE(a.complete);  // the sign of det K_FF agrees with the negative real eigenvalues found
+  if (b.imaginaryParts[0] == 0.0) {
+    EXPECT_LT(maxAbsDifference(*a.mode(), *b.mode()), 1e-6);
+  }
+  std::printf("Method 3 tangent at the equilibrium gap: eigenvalues %.6e %.6e %.6e %.6e, %d negative\n",
+              b.eigenvalues[0], b.eigenvalues[1], b.eigenvalues[2], b.eigenvalues[3], b.negative);
 }
 
 }  // namespace
