@@ -43,6 +43,15 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
   returns CSV --u U [--abs ABS]
       a there-and-back continuation at u = U: the last row comes back to the
       first row at u = U, |P_last - P_first| <= ABS, and P moved on the way
+  branches CSV --at U [U ...] --abs A [--stable-branch]
+      Output/Eigenvalues with Loading/Branch Switching: the path (branch = 0)
+      has branch points at exactly these u (within A), across each the count
+      of negative eigenvalues changes by one; its rows where stable and
+      stable_by_folds differ lie between the first and the last branch point
+      and there is one at least (the parity of folds misses the branch
+      point); each branch k = 1 .. N has rows, ends at a fold within A in u
+      of a branch point of the path, and (--stable-branch) one of them has a
+      stable row
   foldsmatch ARC.csv DISP.csv [--tolerance T]
       the folds of an arc-length curve that end stable branches are where the
       displacement-controlled curve jumps (fold rows of both at the same u within T)
@@ -278,6 +287,38 @@ def bodies(a):
     return 0 if ok and good else 1
 
 
+def branches(c, a):
+    path = [k for k, b in enumerate(c["branch"]) if b == 0]
+    bps = [k for k in path if c["branch_point"][k] > 0]
+    us = [c["u"][k] for k in bps]
+    print("branch points of the path at u = " + ", ".join(f"{u:.9g}" for u in us))
+    ok = len(us) == len(a.at) and all(abs(u - e) <= a.abs for u, e in zip(us, a.at))
+    for k in bps:
+        i = path.index(k)
+        if 0 < i < len(path) - 1:
+            before, after = c["negative_eigenvalues"][path[i - 1]], c["negative_eigenvalues"][path[i + 1]]
+            if abs(after - before) != 1:
+                print(f"branch point at u = {c['u'][k]:.9g}: negative eigenvalues {before:g} -> {after:g}")
+                ok = False
+    differ = [k for k in path if c["stable"][k] != c["stable_by_folds"][k] and not c["fold"][k] and not c["branch_point"][k]]
+    print(f"rows of the path where stable and stable_by_folds differ: {len(differ)}")
+    if not differ or (bps and any(k < bps[0] or k > bps[-1] for k in differ)):
+        ok = False
+    for b in range(1, len(bps) + 1):
+        rows = [k for k, v in enumerate(c["branch"]) if v == b]
+        if not rows:
+            print(f"branch {b}: no rows")
+            ok = False
+            continue
+        last = rows[-1]
+        rejoins = c["fold"][last] > 0 and any(abs(c["u"][last] - u) <= a.abs for u in us)
+        stable = sum(1 for k in rows if c["stable"][k] > 0 and not c["fold"][k])
+        print(f"branch {b}: {len(rows)} rows, u {min(c['u'][k] for k in rows):.6g} .. {max(c['u'][k] for k in rows):.6g}, "
+              f"{stable} stable, ends at u = {c['u'][last]:.9g}{' (a branch point of the path)' if rejoins else ''}")
+        ok = ok and rejoins and (stable > 0 or not a.stable_branch)
+    return 0 if ok else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -336,6 +377,11 @@ def main():
     rt.add_argument("csv")
     rt.add_argument("--u", type=float, required=True)
     rt.add_argument("--abs", type=float, default=2e-10)
+    br = sub.add_parser("branches")
+    br.add_argument("csv")
+    br.add_argument("--at", type=float, nargs="+", required=True)
+    br.add_argument("--abs", type=float, required=True)
+    br.add_argument("--stable-branch", action="store_true")
     fm = sub.add_parser("foldsmatch")
     fm.add_argument("csv")
     fm.add_argument("other")
@@ -368,7 +414,7 @@ def main():
     c = read(a.csv)
     return {"hertz": hertz, "pulloff": pulloff, "value": value, "stiffness": stiffness, "balance": balance,
             "jumps": jumps, "folds": folds, "firstfold": firstfold,
-            "converged": converged, "returns": returns}[a.cmd](c, a)
+            "converged": converged, "returns": returns, "branches": branches}[a.cmd](c, a)
 
 
 if __name__ == "__main__":

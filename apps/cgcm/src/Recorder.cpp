@@ -105,7 +105,7 @@ Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretizati
   if (eigenvalues_ > 0) {
     columns_.push_back("negative_eigenvalues");
     for (int k = 1; k <= eigenvalues_; ++k) columns_.push_back("eigenvalue_" + std::to_string(k));
-    columns_.insert(columns_.end(), {"stable_by_folds", "branch_point"});
+    columns_.insert(columns_.end(), {"stable_by_folds", "branch_point", "branch"});
   }
   // a new file, or (restart) the file kept up to the checkpoint's last row
   auto open = [&](const std::string& path, const std::vector<std::string>& columns) {
@@ -131,6 +131,7 @@ void Recorder::record(const solver::PathState& state) {
   row.newtonIterations = state.iterations;
   row.stable = state.stable;
   row.fold = state.fold;
+  row.branchPoint = state.branchPoint;
   row.jump = state.jump;
   row.residual = state.residual;
   row.cutbacks = state.cutbacks;
@@ -151,7 +152,7 @@ void Recorder::record(const solver::PathState& state) {
     row.contactRadius = probe_->contactRadius(x);
   }
   if (setup_.model.balance) row.Plower = resultant(*setup_.model.balance);
-  curve.push_back(row);
+  if (state.branch == 0) curve.push_back(row);  // the summary's folds, jumps and hysteresis are the path's
   std::vector<double> values{double(row.step), row.u};
   if (parameterIndex_ > 0) values.push_back(row.parameter);
   values.push_back(row.P);
@@ -164,7 +165,7 @@ void Recorder::record(const solver::PathState& state) {
     values.push_back(state.negativeEigenvalues >= 0 ? double(state.negativeEigenvalues) : nan);
     for (int k = 0; k < eigenvalues_; ++k)
       values.push_back(std::size_t(k) < state.eigenvalues.size() ? state.eigenvalues[std::size_t(k)] : nan);
-    values.insert(values.end(), {state.stableByFolds ? 1.0 : 0.0, state.branchPoint ? 1.0 : 0.0});
+    values.insert(values.end(), {state.stableByFolds ? 1.0 : 0.0, state.branchPoint ? 1.0 : 0.0, double(state.branch)});
   }
   if (results_) results_->write(x, values, state.critical.get());
   // the interaction force on each body at this state (the evaluation above)
@@ -177,6 +178,7 @@ void Recorder::record(const solver::PathState& state) {
   char line[300];
   std::string extra;
   if (parameterIndex_ > 0) extra = "  " + columns_[2] + " = " + std::to_string(row.parameter);
+  if (state.branch > 0) extra += "  (branch " + std::to_string(state.branch) + ")";
   if (probe_) extra += "  gap = " + std::to_string(row.gap);
   std::snprintf(line, sizeof line, "step %4d  u = %+.6e%s  P = %+.6e  newton %2d  |f| = %.2e%s%s%s%s\n", row.step,
                 row.u, extra.c_str(), row.P, row.newtonIterations, row.residual, row.stable ? "" : "  unstable",

@@ -238,6 +238,12 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const solver::ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
   const double meshSeconds = secondsSince(setupStart);
   const solver::PathPlan plan = planOf(deck, setup);
+  if (plan.branchSwitching() && out.get<int>("Eigenvalues") == 0)
+    throw InputError("Loading/Branch Switching = true: branch points are found from the tangent's eigenvalues; "
+                     "set Output/Eigenvalues > 0 (e.g. 3)");
+  if (plan.branchSwitching() && !plan.follower().tracesUnstableBranches() && plan.parameter() == "u")
+    throw InputError("Loading/Branch Switching = true: branch points are located on arc-length paths only; set "
+                     "Loading/Control = \"arc-length\" (or continue in a Continuation Parameter)");
   const solver::NewtonSettings newtonSettings = newtonSettingsOf(deck, setup);
   const auto& linearSolverSettings = deck.sublist("Solver").sublist("Linear Solver");
   const int dim = formulationDim(setup.formulation);

@@ -27,11 +27,11 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
     both(buf);
   }
   for (const auto& pt : c)
-    if (pt.fold) {
+    if (pt.fold || pt.branchPoint) {
       const std::string other =
           parameter == "u" ? "" : ", " + parameter + " = " + std::to_string(pt.parameter);
-      std::snprintf(buf, sizeof buf, "fold at step %d: u = %.10g%s, P = %.10g, gap = %.6g, contact radius = %.6g\n",
-                    pt.step, pt.u, other.c_str(), pt.P, pt.gap, pt.contactRadius);
+      std::snprintf(buf, sizeof buf, "%s at step %d: u = %.10g%s, P = %.10g, gap = %.6g, contact radius = %.6g\n",
+                    pt.fold ? "fold" : "branch point", pt.step, pt.u, other.c_str(), pt.P, pt.gap, pt.contactRadius);
       both(buf);
     }
   if (parameter == "u") {

@@ -68,7 +68,7 @@ std::string fields(const Checkpoint& c) {
     for (Real v : {p.u, p.P, p.parameter, p.gap, p.contactRadius, p.Plower, p.residual}) put(out, v);
     put(out, std::int32_t(p.newtonIterations));
     put(out, std::int32_t(p.cutbacks));
-    put(out, std::uint8_t(p.stable | (p.fold << 1) | (p.jump << 2)));
+    put(out, std::uint8_t(p.stable | (p.fold << 1) | (p.jump << 2) | (p.branchPoint << 3)));
   }
   putVector(out, c.u);
   putVector(out, c.previous);
@@ -111,6 +111,7 @@ bool parseFields(std::istream& in, std::uint64_t size, Checkpoint& c) {
     p.stable = flags & 1;
     p.fold = (flags >> 1) & 1;
     p.jump = (flags >> 2) & 1;
+    p.branchPoint = (flags >> 3) & 1;
   }
   if (!in) return false;
   if (!getVector(in, c.u, size / sizeof(Real)) || !getVector(in, c.previous, size / sizeof(Real))) return false;

@@ -57,6 +57,7 @@ struct Continuation::RunState {
   Real lastDpds = 0.0;        ///< dp/ds at the last converged point
   Real lastStepSize = 0.0;    ///< arclength of the last step (signed)
   bool atFold = false;        ///< a fold was located and the segment stops there
+  bool stopWhen = false;      ///< ContinuationSegment::stopWhen held at the last point reported
   bool haveLast = false;
   Spectrum lastSpectrum = notYet();  ///< at the last converged point (a monitored spectrum; negative = -1: none yet)
   static Spectrum notYet() {
@@ -143,6 +144,7 @@ class PathStepper : public LOCA::Stepper {
       state_.atFold = true;
       return status;
     }
+    if (state_.stopWhen) return status;  // a located fold or branch point before B ended the segment
     report(pt);
     state_.lastDpds = dB;
     state_.lastStepSize = stepSize;
@@ -158,7 +160,7 @@ class PathStepper : public LOCA::Stepper {
       owner_.model_->clearGraphOutdated();
     }
     if (state_.restart) return Iterator::Failed;
-    if (state_.atFold) return Iterator::Finished;
+    if (state_.atFold || state_.stopWhen) return Iterator::Finished;
     // The target: reached when the parameter gets to it moving away from the
     // start (after any folds). LOCA's own bound logic assumes a monotonic
     // parameter and declares the bound reached next to a fold that lies just
@@ -177,7 +179,7 @@ class PathStepper : public LOCA::Stepper {
   }
 
   Iterator::IteratorStatus finish(Iterator::IteratorStatus status) override {
-    if (state_.atFold) return Iterator::Finished;  // no step to a bound: the fold is the end
+    if (state_.atFold || state_.stopWhen) return Iterator::Finished;  // no step to a bound: the fold is the end
     const auto result = LOCA::Stepper::finish(status);
     if (result == Iterator::Finished && isTargetStep) {
       // The natural step that lands on the bound: same branch as the last point.
@@ -247,6 +249,7 @@ class PathStepper : public LOCA::Stepper {
     state_.result->last = pt;
     state_.haveLast = true;
     (*state_.observer)(pt);
+    if (state_.segment->stopWhen && state_.segment->stopWhen(pt)) state_.stopWhen = true;
   }
 
   // A fold lies between the previous point A (dp/ds = dA) and the current
@@ -312,7 +315,7 @@ class PathStepper : public LOCA::Stepper {
   Spectrum assess(PathPoint& pt) {
     Spectrum s = owner_.spectrum_->compute(*pt.x, pt.p);
     pt.eigenvalues = s.eigenvalues;
-    pt.negativeEigenvalues = s.negative;
+    pt.negativeEigenvalues = pt.fold || pt.branchPoint ? marginalCount(s) : s.negative;
     pt.critical = s.mode();
     if (!pt.fold && !pt.branchPoint) pt.stable = s.stable();
     return s;
@@ -320,6 +323,15 @@ class PathStepper : public LOCA::Stepper {
 
   // The spectrum is assessed at every point, except in a jump (only its end matters).
   bool monitored() const { return owner_.spectrum_ && !state_.segment->landOnly; }
+
+  // At a located fold or branch point one eigenvalue is 0 to solver tolerance and its sign is round-off: it is
+  // not counted as negative.
+  static int marginalCount(const Spectrum& s) {
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < s.eigenvalues.size(); ++i)
+      if (std::abs(s.eigenvalues[i]) < std::abs(s.eigenvalues[k])) k = i;
+    return s.negative - (!s.eigenvalues.empty() && s.eigenvalues[k] < 0.0 ? 1 : 0);
+  }
 
   // The mode of the eigenvalue nearest 0.
   static const Teuchos::RCP<Vector>& nearestZeroMode(const Spectrum& s) {
@@ -354,7 +366,7 @@ class PathStepper : public LOCA::Stepper {
         if (std::abs(value) < bestAbs) {
           bestAbs = std::abs(value);
           q.eigenvalues = s.eigenvalues;
-          q.negativeEigenvalues = s.negative;
+          q.negativeEigenvalues = marginalCount(s);
           q.critical = nearestZeroMode(s);
           q.dpds = dynamic_cast<const LOCA::MultiContinuation::ExtendedVector&>(trial->getPredictorTangent()[0])
                        .getScalar(0);
@@ -617,7 +629,9 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
     }
     const Real reachedValue = result.last.p[segment.parameter];
     const Real scale = std::abs(segment.target) + std::abs(segment.bound) + 1e-300;
-    if (state.atFold) {
+    if (state.stopWhen) {
+      result.stoppedWhen = true;
+    } else if (state.atFold) {
       result.stoppedAtFold = true;
     } else if (status == Iterator::Finished && std::abs(reachedValue - segment.target) <= 1e-12 * scale) {
       result.reached = true;

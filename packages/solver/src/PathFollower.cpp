@@ -111,6 +111,16 @@ Teuchos::RCP<const Teuchos::ParameterList> PathPlan::validParameters() {
     loading->set("Parameter Bounds", Teuchos::Array<double>{},
                  "{lower, upper}: the continuation stops as failed if its parameter leaves this range (arc-length "
                  "control and jumps; default: the path's range widened by twice its span on each side)");
+    loading->set("Branch Switching", false,
+                 "at every branch point located on an arc-length path (Output/Eigenvalues > 0), follow the other "
+                 "branch too: after the path, from the solution at Switch Amplitude along the critical mode, with "
+                 "the parameter moving the way the switch moved it, to the end of its path (the largest or "
+                 "smallest waypoint); its rows have branch = 1, 2, ... in load_curve.csv");
+    loading->set("Switch Amplitude", 0.0,
+                 "the component along the critical mode (largest entry 1) of the first point of the other branch, "
+                 "in length units; its sign picks one half of a pitchfork. 0: a tenth of the interaction length "
+                 "r0 (without an interaction 1e-3)",
+                 validators::atLeast(-HUGE_VAL));
     return Teuchos::RCP<const Teuchos::ParameterList>(loading);
   }();
   return valid;
@@ -136,6 +146,11 @@ PathPlan::PathPlan(const Teuchos::ParameterList& loading, const std::vector<std:
   // A jump relaxes in moves of at most a quarter of the interaction length, so that
   // no iterate skips the equilibrium spacing or pushes a surface through another.
   if (lengthScale > 0.0) path_.relaxation.maxIncrement = 0.25 * lengthScale;
+  branchSwitching_ = loading.get<bool>("Branch Switching");
+  switchAmplitude_ = loading.get<double>("Switch Amplitude");
+  if (!std::isfinite(switchAmplitude_))
+    throw InputError("Loading/Switch Amplitude: must be finite (0: a tenth of the interaction length)");
+  if (switchAmplitude_ == 0.0) switchAmplitude_ = lengthScale > 0.0 ? 0.1 * lengthScale : 1e-3;
   parameter_ = loading.get<std::string>("Continuation Parameter");
   const auto& pp = loading.get<Teuchos::Array<double>>("Parameter Path");
   parameterPath_.assign(pp.begin(), pp.end());
@@ -184,7 +199,8 @@ Real PathPlan::runawayBound(const std::vector<Real>& waypoints, Real direction, 
 
 PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vector<Real>& waypoints,
                               Real initialStep, bool stableStart, PathContext& c,
-                              const PathFollower::Observer& observer, int& step) const {
+                              const PathFollower::Observer& observer, int& step,
+                              const std::function<bool(const PathPoint&)>& stopWhen) const {
   const Real from = c.model->parameter(index);
   ContinuationSegment segment;
   segment.parameter = index;
@@ -193,6 +209,8 @@ PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vect
   segment.bound = runawayBound(waypoints, segment.direction, index > 0);
   segment.initialStep = std::min(initialStep, std::abs(target - from));
   segment.stableStart = stableStart;
+  if (branchSwitching_ && c.spectrum && c.branch == 0) segment.switchAmplitude = switchAmplitude_;
+  segment.stopWhen = stopWhen;
   const auto r = c.continuation->run(u, segment, [&](const PathPoint& pt) {
     PathState s;
     s.x = pt.x.get();
@@ -207,10 +225,13 @@ PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vect
     s.eigenvalues = pt.eigenvalues;
     s.negativeEigenvalues = pt.negativeEigenvalues;
     s.critical = pt.critical;
+    s.branch = c.branch;
     observer(s);
   });
   PathCost cost{r.steps, r.restarts};
-  if (!r.reached) throw NumericalError(r.failure);
+  for (std::size_t k = 0; k < r.otherBranches.size(); ++k)
+    c.switches.push_back({index, r.branchPoints.at(k), r.otherBranches[k]});
+  if (!r.reached && !r.stoppedWhen) throw NumericalError(r.failure);
   u.assign(*r.last.x);
   for (std::size_t k = 0; k < r.last.p.size(); ++k) c.model->setParameter(int(k), r.last.p[k]);
   return cost;
@@ -234,7 +255,10 @@ PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observe
     observer(assessed);
   };
   PathCost cost = follower_->follow(u, *this, c, track);
-  if (parameter_ == "u") return cost;
+  if (parameter_ == "u") {
+    followOtherBranches(u, c, track, step, cost);
+    return cost;
+  }
   const int index = c.model->parameterIndex(parameter_);
   std::vector<Real> waypoints{c.model->parameter(index)};
   waypoints.insert(waypoints.end(), parameterPath_.begin(), parameterPath_.end());
@@ -246,7 +270,63 @@ PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observe
     cost.continuationSteps += segment.continuationSteps;
     cost.graphRestarts += segment.graphRestarts;
   }
+  followOtherBranches(u, c, track, step, cost);
   return cost;
+}
+
+void PathPlan::followOtherBranches(Vector& u, PathContext& c, const PathFollower::Observer& observer, int& step,
+                                   PathCost& cost) const {
+  for (std::size_t k = 0; k < c.switches.size(); ++k) {
+    const BranchSwitch sw = c.switches[k];
+    const int index = sw.parameter;
+    const std::string name = c.model->parameterNames()[index];
+    std::vector<Real> waypoints = index == 0 ? path_.path : parameterPath_;
+    waypoints.push_back(sw.branchPoint.p[std::size_t(index)]);
+    const Real at = sw.other.p[std::size_t(index)];
+    const Real direction = at >= sw.branchPoint.p[std::size_t(index)] ? 1.0 : -1.0;
+    const Real target = direction > 0 ? *std::max_element(waypoints.begin(), waypoints.end())
+                                      : *std::min_element(waypoints.begin(), waypoints.end());
+    c.branch = int(k) + 1;
+    // the first point of the branch, then the branch
+    PathState first;
+    first.x = sw.other.x.get();
+    first.p = sw.other.p;
+    first.step = ++step;
+    first.iterations = sw.other.iterations;
+    first.residual = sw.other.residual;
+    first.stable = first.stableByFolds = sw.other.stable;
+    first.eigenvalues = sw.other.eigenvalues;
+    first.negativeEigenvalues = sw.other.negativeEigenvalues;
+    first.critical = sw.other.critical;
+    first.branch = c.branch;
+    observer(first);
+    if (direction * (target - at) <= 0.0) continue;
+    u.assign(*sw.other.x);
+    for (std::size_t i = 0; i < sw.other.p.size(); ++i) c.model->setParameter(int(i), sw.other.p[i]);
+    // a branch that rejoins the path does so at one of its branch points, where it turns (a fold of the
+    // branch): it ends there
+    const Real near = 0.01 * std::abs(switchAmplitude_);
+    const auto rejoins = [&](const PathPoint& pt) {
+      if (!pt.fold) return false;
+      for (const auto& other : c.switches) {
+        Vector d(*pt.x, Teuchos::Copy);
+        d.update(-1.0, *other.branchPoint.x, 1.0);
+        if (d.normInf() <= near) return true;
+      }
+      return false;
+    };
+    try {
+      const Real initialStep = index == 0 ? path_.initialIncrement : 0.01 * std::abs(target - at);
+      const auto segment =
+          continueTo(u, index, target, waypoints, initialStep, sw.other.stable, c, observer, step, rejoins);
+      cost.continuationSteps += segment.continuationSteps;
+      cost.graphRestarts += segment.graphRestarts;
+    } catch (const NumericalError& e) {
+      throw NumericalError("the branch from the branch point at " + name + " = " +
+                           std::to_string(sw.branchPoint.p[std::size_t(index)]) + ": " + e.what());
+    }
+  }
+  c.branch = 0;
 }
 
 }  // namespace cgcm::solver

@@ -77,11 +77,14 @@ struct ContinuationSegment {
   /// in that direction with the parameter free. Its sign picks one half of a
   /// pitchfork. 0: no switching.
   Real switchAmplitude = 0.0;
+  /// If set: the run stops after the first point for which it is true (ContinuationResult::stoppedWhen).
+  std::function<bool(const PathPoint&)> stopWhen;
 };
 
 struct ContinuationResult {
   bool reached = false;           ///< the parameter reached the target
   bool stoppedAtFold = false;     ///< stopped at the first fold (ContinuationSegment::stopAtFold)
+  bool stoppedWhen = false;       ///< stopped by ContinuationSegment::stopWhen
   std::string failure;            ///< why not
   int steps = 0;                  ///< converged continuation steps (fold trials excluded)
   int failedSteps = 0;            ///< corrector failures (cut back by LOCA)

@@ -15,6 +15,7 @@ struct LoadPoint {
   int newtonIterations = 0;
   bool stable = true;                     ///< under control of the continuation parameter
   bool fold = false;                      ///< a located fold (turning point of the path)
+  bool branchPoint = false;               ///< a located branch point (Output/Eigenvalues)
   bool jump = false;                      ///< reached by a jump from a fold (displacement control)
   Real residual = 0.0;                    ///< |f|_2 of the accepted state (force units)
   int cutbacks = 0;

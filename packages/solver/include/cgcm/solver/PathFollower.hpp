@@ -32,6 +32,7 @@ struct PathState {
   bool fold = false;          ///< a located fold (turning point of the path)
   bool branchPoint = false;   ///< a located branch point (an eigenvalue crossing 0 without a fold)
   bool jump = false;          ///< reached by a jump from a fold (displacement control)
+  int branch = 0;             ///< 0: the path; k > 0: the branch from the k-th branch point (Loading/Branch Switching)
   /// PathContext::spectrum: the tangent's eigenvalues nearest 0, the count of negative ones (-1: not
   /// computed) and the critical mode (TangentSpectrum).
   std::vector<Real> eigenvalues;
@@ -43,6 +44,12 @@ struct PathState {
 struct PathCost {
   int continuationSteps = 0;  ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;      ///< continuation restarts after graph rebuilds
+};
+
+/// A branch point of the path and the first point of the other branch through it.
+struct BranchSwitch {
+  int parameter = 0;  ///< index in p(0) of the parameter continued in
+  PathPoint branchPoint, other;
 };
 
 /// What followers share with the caller: the solvers, and hooks for a run that
@@ -58,6 +65,9 @@ struct PathContext {
   /// Stability from the tangent's eigenvalues at every accepted state, branch points located on
   /// arc-length paths (the continuation monitors the same spectrum); null: from the parity of folds.
   std::shared_ptr<TangentSpectrum> spectrum;
+  /// Loading/Branch Switching: the switches made along the path (followed after it), and the branch followed now.
+  std::vector<BranchSwitch> switches;
+  int branch = 0;
 };
 
 class PathPlan;
@@ -117,6 +127,8 @@ class PathPlan {
 
   const PathFollower& follower() const { return *follower_; }
   const LoadPathSettings& path() const { return path_; }
+  /// Loading/Branch Switching (it needs the tangent's eigenvalues and an arc-length path).
+  bool branchSwitching() const { return branchSwitching_; }
   /// Loading/Continuation Parameter: "u", or the parameter continued in after the Approach Path.
   const std::string& parameter() const { return parameter_; }
   /// The run needs LOCA (its list is then checked before any work).
@@ -133,20 +145,25 @@ class PathPlan {
   PathCost follow(Vector& u, PathContext& context, const PathFollower::Observer& observer) const;
 
   /// One continuation segment from the converged state u (the model's current
-  /// parameters) to `target` of parameter `index`; u ends on the last point.
-  /// Throws NumericalError if it stops.
+  /// parameters) to `target` of parameter `index`, or to the first point for which
+  /// `stopWhen` holds; u ends on the last point. Throws NumericalError if it stops otherwise.
   PathCost continueTo(Vector& u, int index, Real target, const std::vector<Real>& waypoints, Real initialStep,
                       bool stableStart, PathContext& context, const PathFollower::Observer& observer,
-                      int& step) const;
+                      int& step, const std::function<bool(const PathPoint&)>& stopWhen = {}) const;
 
  private:
   Real runawayBound(const std::vector<Real>& waypoints, Real direction, bool positive) const;
+  /// Follows the branches of context.switches, each from its first point to the end of its path.
+  void followOtherBranches(Vector& u, PathContext& context, const PathFollower::Observer& observer, int& step,
+                           PathCost& cost) const;
 
   std::shared_ptr<const PathFollower> follower_;
   LoadPathSettings path_;
   std::string parameter_ = "u";
   std::vector<Real> parameterPath_;  ///< waypoints of the parameter (not u)
   std::vector<Real> bounds_;         ///< {lower, upper} or empty
+  bool branchSwitching_ = false;
+  Real switchAmplitude_ = 0.0;       ///< Loading/Switch Amplitude, 0 resolved
 };
 
 }  // namespace cgcm::solver
