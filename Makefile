@@ -5,7 +5,7 @@ JOBS      ?= 2
 DECK      ?= inputs/sphere-on-half-space.xml
 OUTPUT    ?= output/demo
 
-.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map cylinder-map punch-study peel-study stability-map sphere-3d method-study sanitize fuzz peers
+.PHONY: demo test build configure deps clean bench figures mesh-convergence paper jkr-study jkr-end pulloff-map cylinder-map punch-study peel-study branch-points stability-check stability-map sphere-3d method-study sanitize fuzz peers
 
 deps:
 	@bash scripts/install-deps.sh
@@ -134,6 +134,18 @@ punch-study: build
 peel-study: build
 	/usr/bin/python3 tools/peel_study.py --build $(BUILD_DIR) --output output/peel-study --jobs $(JOBS)
 	cp output/peel-study/peel_study.png doc/figures/peel-study.png
+
+# Branch points: the tip lowered into a groove (inputs/tip-over-groove.xml: the
+# tangent's eigenvalues, the symmetric path's two branch points and the
+# asymmetric branch between them, about 30 s), plotted into doc/figures; and
+# the two stability criteria (eigenvalues, parity of folds) on every deck of
+# inputs/ (tools/stability_check.py: output/stability-check/table.csv; about
+# an hour with JOBS=2).
+branch-points: build
+	$(BUILD_DIR)/bin/cgcm inputs/tip-over-groove.xml Output/Directory=output/tip-over-groove "Output/Print Steps=false"
+	/usr/bin/python3 tools/plot_branches.py output/tip-over-groove --output doc/figures/branch-points.png
+stability-check: build
+	/usr/bin/python3 tools/stability_check.py --build $(BUILD_DIR) --output output/stability-check --jobs $(JOBS)
 
 # The critical gammaW of the jump-to-contact for gammaL = 10 .. 200 (arc-length
 # approaches, bisection with the fold detector): output/stability-map, and
