@@ -6,6 +6,8 @@
 #include <LOCA_MultiContinuation_ExtendedVector.H>
 #include <LOCA_Parameter_SublistParser.H>
 #include <LOCA_Thyra.H>
+#include <LOCA_TurningPoint_MooreSpence_ExtendedGroup.H>
+#include <LOCA_TurningPoint_MooreSpence_ExtendedVector.H>
 #include <NOX_Solver_Factory.H>
 #include <NOX_Thyra.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -105,7 +107,8 @@ class PathStepper : public LOCA::Stepper {
     }
     const int iterations = solverPtr->getNumIterations();
     const Real residual = residualNorm(solverPtr->getSolutionGroup(), owner_.model_->residualWeights());
-    const bool guard = !atCorner();
+    // (a fold curve's extended state holds the null vector, whose corrections the guards would misread)
+    const bool guard = !atCorner() && state_.segment->foldParameter < 0;
     if (guard && correctorWentFar()) {
       ++state_.result->failedSteps;
       return LOCA::Stepper::postprocess(Iterator::Unsuccessful);
@@ -237,10 +240,15 @@ class PathStepper : public LOCA::Stepper {
   static constexpr Real kCornerSteps = 16.0;
 
   PathPoint point(const LOCA::MultiContinuation::AbstractStrategy& group) const {
-    const auto& g = *group.getUnderlyingGroup();
+    const LOCA::MultiContinuation::AbstractGroup* g = group.getUnderlyingGroup().get();
     PathPoint pt;
-    pt.x = tpetraCopy(g.getX());
-    const auto& pv = g.getParams();
+    // a fold curve's group: (x, null vector, the fold's parameter) over the model's group
+    if (const auto* fold = dynamic_cast<const LOCA::TurningPoint::MooreSpence::ExtendedGroup*>(g)) {
+      pt.critical = tpetraCopy(*dynamic_cast<const LOCA::TurningPoint::MooreSpence::ExtendedVector&>(fold->getX()).getNullVec());
+      g = fold->getUnderlyingGroup().get();
+    }
+    pt.x = tpetraCopy(g->getX());
+    const auto& pv = g->getParams();
     for (int k = 0; k < pv.length(); ++k) pt.p.push_back(pv[k]);
     return pt;
   }
@@ -322,7 +330,7 @@ class PathStepper : public LOCA::Stepper {
   }
 
   // The spectrum is assessed at every point, except in a jump (only its end matters).
-  bool monitored() const { return owner_.spectrum_ && !state_.segment->landOnly; }
+  bool monitored() const { return owner_.spectrum_ && !state_.segment->landOnly && state_.segment->foldParameter < 0; }
 
   // At a located fold or branch point one eigenvalue is 0 to solver tolerance and its sign is round-off: it is
   // not counted as negative.
@@ -586,11 +594,24 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
   result.last.x = x;
   result.last.p = p;
   result.last.stable = segment.stableStart;
-  if (spectrum_ && !segment.landOnly) state.lastSpectrum = spectrum_->compute(*x, p);
+  if (spectrum_ && !segment.landOnly && segment.foldParameter < 0) state.lastSpectrum = spectrum_->compute(*x, p);
+  Teuchos::RCP<const Vector> nullVector = segment.nullVector;
+  if (segment.foldParameter >= 0 && nullVector.is_null())
+    throw InputError("continuation along a fold: the fold's null vector is needed (ContinuationSegment::nullVector)");
   for (;;) {
     model_->clearGraphOutdated();
     if (!model_->graphCovers(*x)) model_->growGraph(*x, false);
     auto params = runParameters(*loca_, newton_, name, p[segment.parameter], lower, upper, initialStep, maxSteps, print_);
+    if (segment.foldParameter >= 0) {
+      auto& bifurcation = params->sublist("LOCA").sublist("Bifurcation");
+      bifurcation.set("Type", "Turning Point");
+      bifurcation.get("Formulation", "Moore-Spence");
+      bifurcation.get("Solver Method", "Phipps Bordering");
+      bifurcation.set("Bifurcation Parameter", model_->parameterNames()[segment.foldParameter]);
+      Teuchos::RCP<NOX::Abstract::Vector> normalization = Teuchos::rcp(new NOX::Thyra::Vector(thyraCopy(*nullVector)));
+      bifurcation.set("Length Normalization Vector", normalization);
+      bifurcation.set("Initial Null Vector", normalization->clone(NOX::DeepCopy));
+    }
     lastParams_ = params;
     auto data = LOCA::createGlobalData(params);
     LOCA::ParameterVector pv;
@@ -618,6 +639,7 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
       state.restart = false;
       x = result.last.x;
       p = result.last.p;
+      if (segment.foldParameter >= 0 && !result.last.critical.is_null()) nullVector = result.last.critical;
       model_->growGraph(*x, state.widen);
       state.widen = false;
       // LOCA's first step moves the parameter by the initial step (signed).

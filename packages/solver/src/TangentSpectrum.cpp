@@ -123,7 +123,9 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
       Teuchos::rcp_implicit_cast<const Tpetra::Vector<Real, LocalIndex, GlobalIndex, assembly::Node>>(xCopy),
       model_->get_x_space()));
   auto pv = Thyra::createMember(model_->get_p_space(0));
-  for (std::size_t k = 0; k < p.size(); ++k) Thyra::set_ele(Teuchos::Ordinal(k), p[k], pv.ptr());
+  std::vector<Real> all = model_->parameters();  // those p does not give keep the model's values
+  for (std::size_t k = 0; k < p.size() && k < all.size(); ++k) all[k] = p[k];
+  for (std::size_t k = 0; k < all.size(); ++k) Thyra::set_ele(Teuchos::Ordinal(k), all[k], pv.ptr());
   in.set_p(0, pv);
   auto out = model_->createOutArgs();
   out.set_W_op(W_);

@@ -1,7 +1,9 @@
-// Branch points: the pitchfork of a tilting bar between two Lennard-Jones
-// contacts (TiltingBarModel.hpp), whose branch point and tilted branch are
-// known in closed form, found by continuation with the tangent's spectrum,
-// and the tilted branch followed after switching to it.
+// Branch points and fold curves: the pitchfork of a tilting bar between two
+// Lennard-Jones contacts (TiltingBarModel.hpp), whose branch point and tilted
+// branch are known in closed form, found by continuation with the tangent's
+// spectrum, and the tilted branch followed after switching to it; the fold of
+// a spring chain against a Lennard-Jones wall (ChainModel.hpp) followed in two
+// parameters (LOCA's turning-point continuation) to the cusp where it ends.
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ChainModel.hpp"
 #include "TiltingBarModel.hpp"
 #include "cgcm/solver/Continuation.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
@@ -130,6 +133,74 @@ TEST(BranchPoint, APitchforkOfATiltingBarIsLocatedAndItsTiltedBranchFollowed) {
               "tilt %.4f, %d points, last point %s (%d negative eigenvalues)\n",
               bp.p[0], lambdaB, bp.p[0] - lambdaB, zb, t.last.p[0], largestTilt, tiltedPoints, t.last.stable ? "stable" : "unstable",
               t.last.negativeEigenvalues);
+}
+
+// The chain's folds in (lambda, eps): eps phi1''(g) = -K with phi = eps phi1, lambda = g + eps phi1'(g) / K,
+// i.e. eps(g) = -K / phi1''(g), lambda(g) = g - phi1'(g) / phi1''(g). The jump-in and pull-off folds meet
+// where eps(g) is smallest, at the cusp where the third derivative of phi1 vanishes: g^6 = 3.25 (s = 1).
+// Below that eps the approach has no fold.
+TEST(FoldCurve, TheChainsJumpInFoldIsFollowedInTheWallStrengthToItsCusp) {
+  LennardJonesWall unit;  // phi1: eps = 1
+  Teuchos::ParameterList settings("Linear Solver");
+  settings.setParameters(*solver::linearSolverValidParameters());
+  settings.set("Tolerance", 1e-13);
+  auto model = Teuchos::rcp(new test::ChainModel(Tpetra::getDefaultComm(), 10, 10.0, 1.0, unit,
+                                                 solver::buildLinearSolver(settings, Tpetra::getDefaultComm()->getSize(), 1)));
+  solver::NewtonSettings newton;
+  newton.residualTolerance = 1e-11;
+  newton.forceScale = 1.0;
+  newton.maxIterations = 10;
+  const double K = model->K();
+  auto epsOf = [&](double g) { return -K / unit.ddphi(g); };
+  auto lambdaOf = [&](double g) { return g - unit.dphi(g) / unit.ddphi(g); };
+  const double gCusp = std::pow(3.25, 1.0 / 6.0), epsCusp = epsOf(gCusp), lambdaCusp = lambdaOf(gCusp);
+
+  // the approach at eps = 1 to its jump-in fold, located, with its critical mode (the null vector)
+  solver::Continuation continuation(model, newton, Teuchos::ParameterList("LOCA"));
+  continuation.monitorStability(std::make_shared<solver::TangentSpectrum>(model, 1));
+  const double lambdaFar = 5.0;
+  const double gFar = Bar::root([&](double g) { return model->lambdaOf(g) - lambdaFar; }, 3.0, 10.0);
+  model->setParameter(0, lambdaFar);
+  solver::ContinuationSegment approach;
+  approach.target = 0.98;
+  approach.direction = -1.0;
+  approach.bound = 10.0;
+  approach.initialStep = 0.05;
+  approach.stopAtFold = true;
+  const auto a = continuation.run(*model->stateOf(gFar), approach, [](const solver::PathPoint&) {});
+  ASSERT_TRUE(a.stoppedAtFold) << a.failure;
+  const auto& fold = a.folds.front();
+  ASSERT_FALSE(fold.critical.is_null());
+
+  // the fold followed as eps falls, lambda solved for with the null vector, to the cusp
+  continuation.monitorStability(nullptr);
+  for (std::size_t k = 0; k < fold.p.size(); ++k) model->setParameter(int(k), fold.p[k]);
+  solver::ContinuationSegment curve;
+  curve.parameter = 1;
+  curve.foldParameter = 0;
+  curve.nullVector = fold.critical;
+  curve.target = 0.01;
+  curve.direction = -1.0;
+  curve.bound = 10.0;
+  curve.initialStep = 0.02;
+  curve.stopAtFold = true;  // the fold curve's extreme in eps
+  int points = 0;
+  const auto c = continuation.run(*fold.x, curve, [&](const solver::PathPoint& pt) {
+    const double g = model->tipGap(*pt.x), lambda = pt.p[0], eps = pt.p[1];
+    // a fold of the chain at (lambda, eps): on the closed-form curve
+    EXPECT_NEAR(eps, epsOf(g), 1e-9) << "g = " << g;
+    EXPECT_NEAR(lambda, lambdaOf(g), 1e-9) << "g = " << g;
+    EXPECT_FALSE(pt.critical.is_null());
+    ++points;
+  });
+  ASSERT_TRUE(c.stoppedAtFold) << c.failure;
+  EXPECT_GE(points, 3);  // LOCA's steps on the extended system are long (5 or 6 points here): every one is checked
+  const auto& cusp = c.folds.front();
+  EXPECT_NEAR(cusp.p[1], epsCusp, 1e-8);
+  EXPECT_NEAR(cusp.p[0], lambdaCusp, 1e-6);
+  EXPECT_NEAR(model->tipGap(*cusp.x), gCusp, 1e-3);  // eps is flat in g at the cusp: g to the root of its error
+  std::printf("chain fold curve: cusp eps = %.10f (closed form %.10f), lambda = %.8f (%.8f), %d points, "
+              "%d Newton iterations\n", cusp.p[1], epsCusp, cusp.p[0], lambdaCusp, points, c.newtonIterations);
 }
 
 }  // namespace

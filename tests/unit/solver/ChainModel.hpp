@@ -2,7 +2,8 @@
 // A model with folds known in closed form, for the continuation tests: a
 // chain of n springs (stiffness k, rest length L) hanging from a support at
 // height lambda + n L, whose tip is attracted by a wall at height 0 through
-// the Lennard-Jones potential phi(g) = eps [(s/g)^12 - 2 (s/g)^6].
+// the Lennard-Jones potential phi(g) = eps [(s/g)^12 - 2 (s/g)^6]. Its
+// parameters: lambda and the wall's strength eps (p(0) = (lambda, eps)).
 //
 // Unknowns h_1..h_n (heights), energy sum_i k/2 (h_{i-1} - h_i - L)^2 + phi(h_n)
 // with h_0 = lambda + n L. In equilibrium every spring carries the tension
@@ -57,15 +58,16 @@ class ChainModel : public solver::ParameterizedModel {
     }
     graph_->fillComplete();
     space_ = Thyra::createVectorSpace<Real>(owned_);
-    pMap_ = Teuchos::rcp(new assembly::Map(1, 0, comm, Tpetra::LocallyReplicated));
+    pMap_ = Teuchos::rcp(new assembly::Map(2, 0, comm, Tpetra::LocallyReplicated));
     pSpace_ = Thyra::createVectorSpace<Real>(pMap_);
-    names_ = Teuchos::rcp(new Teuchos::Array<std::string>(1, "lambda"));
+    names_ = Teuchos::rcp(new Teuchos::Array<std::string>(Teuchos::tuple<std::string>("lambda", "eps")));
     nominal_ = createInArgs();
     auto x0 = Thyra::createMember(space_);
     Thyra::assign(x0.ptr(), 0.0);
     nominal_.set_x(x0);
     p_ = Thyra::createMember(pSpace_);
     Thyra::set_ele(0, 0.0, p_.ptr());
+    Thyra::set_ele(1, wall_.eps, p_.ptr());
     nominal_.set_p(0, p_);
   }
 
@@ -109,7 +111,7 @@ class ChainModel : public solver::ParameterizedModel {
 
   // ParameterizedModel
   const Teuchos::Array<std::string>& parameterNames() const override { return *names_; }
-  std::vector<Real> parameters() const override { return {Thyra::get_ele(*p_, 0)}; }
+  std::vector<Real> parameters() const override { return {Thyra::get_ele(*p_, 0), Thyra::get_ele(*p_, 1)}; }
   void setParameter(int index, Real value) override { Thyra::set_ele(index, value, p_.ptr()); }
 
   // Thyra::ModelEvaluator
@@ -142,7 +144,10 @@ class ChainModel : public solver::ParameterizedModel {
   }
 
   void evalModelImpl(const MEB::InArgs<Real>& in, const MEB::OutArgs<Real>& out) const override {
-    const double lambda = Thyra::get_ele(in.get_p(0).is_null() ? *p_ : *in.get_p(0), 0);
+    const auto& p = in.get_p(0).is_null() ? *p_ : *in.get_p(0);
+    const double lambda = Thyra::get_ele(p, 0);
+    LennardJonesWall wall = wall_;
+    wall.eps = Thyra::get_ele(p, 1);
     if (beforeEvaluation) beforeEvaluation(lambda);
     assembly::Vector h(overlap_);
     h.doImport(*Extract::getConstTpetraVector(in.get_x()), *import_, Tpetra::INSERT);
@@ -155,7 +160,7 @@ class ChainModel : public solver::ParameterizedModel {
       auto fv = f->getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (std::size_t l = 0; l < owned_->getNodeNumElements(); ++l) {
         const GlobalIndex i = owned_->getGlobalElement(l);
-        fv(l, 0) = -tension(i) + (i < n_ - 1 ? tension(i + 1) : wall_.dphi(at(i)));
+        fv(l, 0) = -tension(i) + (i < n_ - 1 ? tension(i + 1) : wall.dphi(at(i)));
       }
     }
     if (!out.get_W_op().is_null()) {
@@ -163,7 +168,7 @@ class ChainModel : public solver::ParameterizedModel {
       J->resumeFill();
       for (std::size_t l = 0; l < owned_->getNodeNumElements(); ++l) {
         const GlobalIndex i = owned_->getGlobalElement(l);
-        const double diag = i < n_ - 1 ? 2 * k_ : k_ + wall_.ddphi(at(i));
+        const double diag = i < n_ - 1 ? 2 * k_ : k_ + wall.ddphi(at(i));
         std::vector<GlobalIndex> cols{i};
         std::vector<double> vals{diag};
         if (i > 0) cols.push_back(i - 1), vals.push_back(-k_);

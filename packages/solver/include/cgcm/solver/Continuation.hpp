@@ -48,7 +48,8 @@ struct PathPoint {
   int iterations = 0;         ///< Newton iterations of its corrector
   Real residual = 0.0;        ///< |f|_2 at the point (force units)
   /// With a monitored spectrum: the tangent's eigenvalues nearest 0 and the count of negative ones (-1: not
-  /// computed); at a branch point `critical` is the mode whose eigenvalue is 0, otherwise the smallest one's.
+  /// computed); at a branch point `critical` is the mode whose eigenvalue is 0, otherwise the smallest one's;
+  /// on a fold curve (ContinuationSegment::foldParameter) the fold's null vector.
   std::vector<Real> eigenvalues;
   int negativeEigenvalues = -1;
   Teuchos::RCP<Vector> critical;
@@ -79,6 +80,14 @@ struct ContinuationSegment {
   Real switchAmplitude = 0.0;
   /// If set: the run stops after the first point for which it is true (ContinuationResult::stoppedWhen).
   std::function<bool(const PathPoint&)> stopWhen;
+  /// >= 0: the start is a fold in p[foldParameter], and the run follows the fold
+  /// itself as `parameter` changes, p[foldParameter] solved for (LOCA's
+  /// Moore-Spence turning-point continuation, LOCA/Bifurcation). Its points
+  /// carry the null vector in PathPoint::critical; a "fold" of this run is
+  /// an extreme of the fold curve in `parameter` (a cusp, where the fold ends).
+  int foldParameter = -1;
+  /// The fold's null vector (initial guess and length normalisation), e.g. the critical mode at the fold.
+  Teuchos::RCP<const Vector> nullVector;
 };
 
 struct ContinuationResult {
