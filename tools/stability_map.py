@@ -2,21 +2,30 @@
 """Where the approach of the sphere on the half-space becomes stable: for each
 gammaL, the critical gammaW below which the approach jumps into contact.
 
-For a given (gammaL, gammaW) cgcm follows the approach by arc-length
-continuation (inputs/sphere-on-half-space.xml, Loading/Control = arc-length)
-from 6 r0 apart to 2 r0 past the equilibrium gap. The approach is unstable
-when the path has a jump-to-contact: a fold that ends the stable branch of
-the bodies apart, recognised by its apex gap above 1.1 r_S0 (the small loops
-a coarse contact zone adds while the contact grows ring by ring sit at gaps
-of 1.0-1.05 r_S0). The critical gammaW is bracketed in log gammaW until the
-bracket is 3 % wide (bisection with the fold detector); u and P at the
-critical point are those of the jump-in fold at the unstable end of the
-bracket, where the two folds of the loop are about to merge.
+Method "fold" (the default): one cgcm run per gammaL. It follows the approach
+(inputs/sphere-on-half-space.xml, Loading/Control = arc-length, from 6 r0
+apart to 2 r0 past the equilibrium gap) at a gammaW where it jumps, locates
+the jump-in fold, and follows that fold in (u, gammaW) with LOCA's
+turning-point continuation (LOCA/Bifurcation/Type = Turning Point,
+Loading/Continuation Parameter = gammaW) to the cusp where it ends: the
+fold curve's largest gammaW, located to solver tolerance, is gammaW_crit;
+u, P and the apex gap there are the critical point's.
 
-Writes stability_boundary.csv (gammaL, gammaW_crit, gammaW_stable,
-gammaW_unstable, u_crit, P_crit, tabor_mu_crit) and stability_map.png.
+Method "bisection": for a given (gammaL, gammaW) the approach is unstable
+when its path has a fold with the apex gap above 1.1 r_S0 (the small loops a
+coarse contact zone adds while the contact grows ring by ring sit at gaps of
+1.0-1.05 r_S0); gammaW_crit is bracketed in log gammaW until the bracket is
+3 % wide, one approach per trial. Near the cusp the jump-in loop is narrower
+in u than the approach's steps (r0/10): at gammaL = 50 and gammaW = 41.5 it
+is 5e-6 wide, and the steps pass it without a fold, so bisection puts
+gammaW_crit too low (doc/validation.md).
+
+Writes stability_boundary.csv (gammaL, gammaW_crit, u_crit, P_crit,
+gap_crit, tabor_mu_crit, seconds; with --method both also the bisection's
+gammaW_crit and seconds) and stability_map.png.
 
     stability_map.py --build build --output output/stability-map [--gammaL 10 20 50 100 200]
+        [--method fold|bisection|both]
 """
 import argparse
 import csv
@@ -24,6 +33,7 @@ import math
 import os
 import subprocess
 import sys
+import time
 
 import matplotlib
 
@@ -39,19 +49,49 @@ def tabor(gl, gw):
     return TABOR * (gl / gw ** 2) ** (1 / 3)
 
 
-def run(build, out, gl, gw):
-    """Approach of (gl, gw); returns the jump-in fold (u, P) or None."""
+def approach(build, name, gl, gw, extra=()):
+    """The cgcm command of the approach of (gl, gw) into folder `name`."""
     r0 = 1.0 / gl
-    rs0 = r0 / 15 ** (1 / 6)
     zone = min(0.5, max(0.1, 30 * r0))  # fine cells of about r0 / 1.5 around the contact
-    name = os.path.join(out, f"gL{gl:g}-gW{gw:.6g}")
-    args = [os.path.join(build, "bin", "cgcm"), os.path.join(ROOT, "inputs", "sphere-on-half-space.xml"),
-            f"Output/Directory={name}", "Output/Print Steps=false", "Loading/Control=arc-length",
+    return [os.path.join(build, "bin", "cgcm"), os.path.join(ROOT, "inputs", "sphere-on-half-space.xml"),
+            f"Output/Directory={name}", "Output/Print Steps=false", "Output/Exodus=false", "Loading/Control=arc-length",
             f"Interaction/gammaL={gl:.10g}", f"Interaction/gammaW={gw:.10g}",
             f"Geometry/Contact Zone Size={zone:.4g}",
             f"Loading/Approach Path={{{-6 * r0:.6g},{2 * r0:.6g}}}",
             f"Loading/Initial Increment={r0 / 20:.6g}", f"Loading/Max Increment={r0 / 10:.6g}",
-            f"Loading/Min Increment={r0 * 1e-6:.6g}"]
+            f"Loading/Min Increment={r0 * 1e-6:.6g}", *extra]
+
+
+def fold_curve(build, out, gl):
+    """The cusp of the jump-in fold followed in (u, gammaW): (gammaW_crit, u, P, gap, seconds, states)."""
+    guess = math.sqrt(gl * (TABOR / 0.65) ** 3)  # Tabor mu = 0.65
+    start, t0 = 0.5 * guess, time.time()
+    while True:
+        name = os.path.join(out, f"gL{gl:g}-fold-from-gW{start:.6g}")
+        args = approach(build, name, gl, start, ["Loading/Continuation Parameter=gammaW",
+                                                  f"Loading/Parameter Path={{{4 * guess:.6g}}}",
+                                                  "LOCA/Bifurcation/Type=Turning Point"])
+        proc = subprocess.run(args, capture_output=True, text=True)
+        if proc.returncode == 1 and "has no fold to follow" in proc.stderr:
+            start /= 2  # the approach at this gammaW has no jump-in
+            continue
+        if proc.returncode != 0:
+            sys.exit(f"cgcm failed for gammaL = {gl}, following the fold from gammaW = {start:.6g}:\n{proc.stderr}")
+        break
+    with open(os.path.join(name, "load_curve.csv"), newline="") as f:
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    curve = [r for r in rows if r["fold_curve"] > 0]
+    if not curve or curve[-1]["fold"] == 0:
+        sys.exit(f"gammaL = {gl}: the fold reached gammaW = {4 * guess:.6g} without a cusp")
+    cusp = curve[-1]
+    return cusp["gammaW"], cusp["u"], cusp["P"], cusp["gap"], time.time() - t0, len(curve)
+
+
+def run(build, out, gl, gw):
+    """Approach of (gl, gw); returns the jump-in fold (u, P) or None."""
+    rs0 = 1.0 / gl / 15 ** (1 / 6)
+    name = os.path.join(out, f"gL{gl:g}-gW{gw:.6g}")
+    args = approach(build, name, gl, gw)
     proc = subprocess.run(args, capture_output=True, text=True)
     if proc.returncode != 0:
         sys.exit(f"cgcm failed for gammaL = {gl}, gammaW = {gw}:\n{proc.stderr}")
@@ -90,6 +130,7 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--output", default="output/stability-map")
     ap.add_argument("--gammaL", type=float, nargs="+", default=[10, 20, 50, 100, 200])
+    ap.add_argument("--method", choices=("fold", "bisection", "both"), default="fold")
     ap.add_argument("--plot-only", action="store_true", help="plot an existing stability_boundary.csv")
     a = ap.parse_args()
     os.makedirs(a.output, exist_ok=True)
@@ -100,12 +141,25 @@ def main():
         return 0
     rows = []
     for gl in a.gammaL:
-        lo, hi, (u, p) = critical(a.build, a.output, gl)
-        gw = math.sqrt(lo * hi)
-        rows.append({"gammaL": gl, "gammaW_crit": gw, "gammaW_stable": hi, "gammaW_unstable": lo, "u_crit": u,
-                     "P_crit": p, "tabor_mu_crit": tabor(gl, gw)})
-        print(f"gammaL = {gl:g}: gammaW_crit = {gw:.4g} (Tabor mu {tabor(gl, gw):.3f}), fold at u = {u:.5g}, "
-              f"P = {p:.5g}", flush=True)
+        row = {"gammaL": gl}
+        if a.method in ("fold", "both"):
+            gw, u, p, gap, seconds, states = fold_curve(a.build, a.output, gl)
+            row.update({"gammaW_crit": gw, "u_crit": u, "P_crit": p, "gap_crit": gap, "tabor_mu_crit": tabor(gl, gw),
+                        "seconds": seconds})
+            print(f"gammaL = {gl:g}: cusp of the jump-in fold at gammaW = {gw:.6g} (Tabor mu {tabor(gl, gw):.3f}), "
+                  f"u = {u:.6g}, P = {p:.5g}, gap = {gap:.5g}; {states} fold-curve states, {seconds:.0f} s", flush=True)
+        if a.method in ("bisection", "both"):
+            t0 = time.time()
+            lo, hi, (u, p) = critical(a.build, a.output, gl)
+            gw = math.sqrt(lo * hi)
+            bisection = {"gammaW_crit_bisection": gw, "seconds_bisection": time.time() - t0}
+            if a.method == "bisection":
+                bisection = {"gammaW_crit": gw, "u_crit": u, "P_crit": p, "gap_crit": float("nan"),
+                             "tabor_mu_crit": tabor(gl, gw), "seconds": bisection["seconds_bisection"]}
+            row.update(bisection)
+            print(f"gammaL = {gl:g}: bisection gammaW_crit = {gw:.4g} in [{lo:.4g}, {hi:.4g}], "
+                  f"{time.time() - t0:.0f} s", flush=True)
+        rows.append(row)
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
@@ -118,9 +172,10 @@ def main():
 def plot(rows, out):
     fig, ax = plt.subplots(figsize=(6, 4.5))
     gls = [r["gammaL"] for r in rows]
-    ax.errorbar(gls, [r["gammaW_crit"] for r in rows],
-                yerr=[[r["gammaW_crit"] - r["gammaW_unstable"] for r in rows],
-                      [r["gammaW_stable"] - r["gammaW_crit"] for r in rows]], fmt="o-", label="cgcm: critical gammaW")
+    ax.plot(gls, [r["gammaW_crit"] for r in rows], "o-", label="cgcm: critical gammaW (cusp of the jump-in fold)")
+    if all("gammaW_crit_bisection" in r for r in rows):
+        ax.plot(gls, [r["gammaW_crit_bisection"] for r in rows], "s--", mfc="none", lw=0.8,
+                label="bisection with approaches in steps of r0/10")
     span = [min(gls) / 1.5, max(gls) * 1.5]
     for mu in (0.7, 0.8):
         ax.plot(span, [math.sqrt(g * (TABOR / mu) ** 3) for g in span], ":", lw=1, label=f"Tabor mu = {mu}")

@@ -92,9 +92,10 @@ Real ContactProbe::contactRadius(const Vector& u) const {
 
 Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,
                    const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
-                   const solver::Checkpoint* resume, int eigenvalues)
+                   const solver::Checkpoint* resume, int eigenvalues, bool foldCurve)
     : setup_(setup), mesh_(*disc.mesh), model_(*disc.model), probe_(probe), parameterIndex_(parameterIndex),
-      eigenvalues_(eigenvalues), root_(disc.dofs->comm()->getRank() == 0), print_(print), log_(log),
+      eigenvalues_(eigenvalues), foldCurve_(foldCurve), root_(disc.dofs->comm()->getRank() == 0), print_(print),
+      log_(log),
       f_(disc.model->map()) {
   columns_ = {"step", "u"};
   if (parameterIndex_ > 0) columns_.push_back(model_.parameterNames()[parameterIndex_]);
@@ -107,6 +108,7 @@ Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretizati
     for (int k = 1; k <= eigenvalues_; ++k) columns_.push_back("eigenvalue_" + std::to_string(k));
     columns_.insert(columns_.end(), {"stable_by_folds", "branch_point", "branch"});
   }
+  if (foldCurve_) columns_.push_back("fold_curve");
   // a new file, or (restart) the file kept up to the checkpoint's last row
   auto open = [&](const std::string& path, const std::vector<std::string>& columns) {
     return resume ? std::make_unique<io::CsvWriter>(path, columns, double(resume->curve.back().step))
@@ -167,6 +169,7 @@ void Recorder::record(const solver::PathState& state) {
       values.push_back(std::size_t(k) < state.eigenvalues.size() ? state.eigenvalues[std::size_t(k)] : nan);
     values.insert(values.end(), {state.stableByFolds ? 1.0 : 0.0, state.branchPoint ? 1.0 : 0.0, double(state.branch)});
   }
+  if (foldCurve_) values.push_back(state.onFoldCurve ? 1.0 : 0.0);
   if (results_) results_->write(x, values, state.critical.get());
   // the interaction force on each body at this state (the evaluation above)
   const auto forces = model_.problem().interactionForces();  // collective; empty without interaction
@@ -179,6 +182,7 @@ void Recorder::record(const solver::PathState& state) {
   std::string extra;
   if (parameterIndex_ > 0) extra = "  " + columns_[2] + " = " + std::to_string(row.parameter);
   if (state.branch > 0) extra += "  (branch " + std::to_string(state.branch) + ")";
+  if (state.onFoldCurve) extra += "  (fold curve)";
   if (probe_) extra += "  gap = " + std::to_string(row.gap);
   std::snprintf(line, sizeof line, "step %4d  u = %+.6e%s  P = %+.6e  newton %2d  |f| = %.2e%s%s%s%s\n", row.step,
                 row.u, extra.c_str(), row.P, row.newtonIterations, row.residual, row.stable ? "" : "  unstable",

@@ -262,6 +262,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   solver::NewtonSolver newton(model, newtonSettings);
   const auto loca = plan.locaParameters(deck.isSublist("LOCA") ? deck.sublist("LOCA") : Teuchos::ParameterList("LOCA"));
   solver::Continuation continuation(model, newtonSettings, loca, printSteps && newtonSettings.printIterations);
+  if (continuation.followsFolds() && plan.parameter() == "u")
+    throw InputError("LOCA/Bifurcation/Type = Turning Point follows the Approach Path's first fold in a second "
+                     "parameter: set Loading/Continuation Parameter (gammaW or gammaL) and its Parameter Path");
   std::unique_ptr<ContactProbe> probe;
   if (setup.model.contact) probe = std::make_unique<ContactProbe>(*setup.model.contact, *disc.mesh, *disc.problem);
   if (root && printSteps) logStart(log, setup, plan, numDofs, comm->getSize(), newtonSettings);
@@ -278,7 +281,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Follow the path, recording every accepted state (a checkpoint after each, under displacement control).
   const int eigenvalues = out.get<int>("Eigenvalues");
   Recorder recorder(setup, disc, probe.get(), dir, out.get<bool>("Exodus"), model->parameterIndex(plan.parameter()),
-                    printSteps, log, resume ? &*resume : nullptr, eigenvalues);
+                    printSteps, log, resume ? &*resume : nullptr, eigenvalues, continuation.followsFolds());
   Real lastDisplacement = resume ? resume->lastDisplacement : plan.path().path.front();  // of the last state that was no fold
   solver::PathContext context = pathContext(disc, newton, continuation, resume, previous);
   if (eigenvalues > 0) context.spectrum = std::make_shared<solver::TangentSpectrum>(model, eigenvalues);

@@ -15,6 +15,7 @@
 
 #include <Teuchos_oblackholestream.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -460,6 +461,46 @@ void setUnread(Teuchos::ParameterList& to, const Teuchos::ParameterList& from) {
 
 }  // namespace
 
+namespace {
+
+// The deck's LOCA/Bifurcation list: what LOCA's Moore-Spence turning-point group reads (names and values),
+// checked before the run (LOCA reads them only when a fold is followed, late in a run).
+void checkBifurcation(const Teuchos::ParameterList& b) {
+  const std::vector<std::string> owned = {"Bifurcation Parameter", "Length Normalization Vector", "Initial Null Vector"};
+  const std::vector<std::string> known = {"Type", "Formulation", "Solver Method", "Perturb Initial Solution",
+                                          "Relative Perturbation Size", "Null Vector Scaling",
+                                          "Update Null Vectors Every Continuation Step",
+                                          "Multiply Null Vectors by Mass Matrix"};
+  auto listed = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+  };
+  for (auto it = b.begin(); it != b.end(); ++it) {
+    const std::string& name = b.name(it);
+    if (std::find(owned.begin(), owned.end(), name) != owned.end())
+      throw InputError("LOCA/Bifurcation/" + name + ": set by cgcm (the fold's parameter u and its null vector); "
+                       "remove it from the LOCA sublist");
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw InputError("LOCA/Bifurcation/" + name + ": not a parameter of LOCA's turning-point continuation; "
+                       "allowed: " + listed(known));
+  }
+  auto choice = [&](const std::string& name, const std::vector<std::string>& allowed, const std::string& why) {
+    if (!b.isParameter(name)) return;
+    if (!b.isType<std::string>(name) ||
+        std::find(allowed.begin(), allowed.end(), b.get<std::string>(name)) == allowed.end())
+      throw InputError("LOCA/Bifurcation/" + name + ": allowed values " + listed(allowed) + why);
+  };
+  choice("Type", {"None", "Turning Point"}, " (Turning Point: follow the approach's first fold in (u, the "
+                                          "Continuation Parameter))");
+  choice("Formulation", {"Moore-Spence"}, " (Minimally Augmented needs transposed solves, which cgcm's solvers "
+                                          "do not offer)");
+  choice("Solver Method", {"Phipps Bordering", "Salinger Bordering"}, "");
+  choice("Null Vector Scaling", {"None", "Order 1", "Order N"}, "");
+}
+
+}  // namespace
+
 Teuchos::RCP<Teuchos::ParameterList> Continuation::defaultLocaParameters() {
   auto p = Teuchos::rcp(new Teuchos::ParameterList("LOCA"));
   auto& stepper = p->sublist("Stepper");
@@ -485,6 +526,7 @@ Continuation::Continuation(Teuchos::RCP<ParameterizedModel> model, const NewtonS
                        "Path, Parameter Bounds); remove it from the LOCA sublist");
   if (loca.isSublist("Stepper") && loca.sublist("Stepper").isParameter("Max Nonlinear Iterations"))
     throw InputError("LOCA/Stepper/Max Nonlinear Iterations: set by cgcm from Solver/Newton/Max Iterations");
+  if (loca.isSublist("Bifurcation")) checkBifurcation(loca.sublist("Bifurcation"));
   loca_ = defaultLocaParameters();
   setUnread(*loca_, loca);
   loca_->sublist("Stepper").set("Max Nonlinear Iterations", newton_.maxIterations);
@@ -492,6 +534,11 @@ Continuation::Continuation(Teuchos::RCP<ParameterizedModel> model, const NewtonS
 }
 
 Continuation::~Continuation() = default;
+
+bool Continuation::followsFolds() const {
+  return loca_->isSublist("Bifurcation") && loca_->sublist("Bifurcation").isType<std::string>("Type") &&
+         loca_->sublist("Bifurcation").get<std::string>("Type") == "Turning Point";
+}
 
 namespace {
 
@@ -536,6 +583,7 @@ void Continuation::validate(const Vector& x) {
   auto params = runParameters(*loca_, newton_, model_->parameterNames()[0], p[0], p[0] - 1.0, p[0] + 1.0, 1e-3,
                               loca_->sublist("Stepper").get<int>("Max Steps"), false);
   params->sublist("NOX").sublist("Printing").set("Output Information", 0);
+  params->sublist("LOCA").sublist("Bifurcation").set("Type", "None");  // its list is checked by the constructor
   auto data = LOCA::createGlobalData(params);
   LOCA::ParameterVector pv;
   for (std::size_t k = 0; k < p.size(); ++k) pv.addParameter(model_->parameterNames()[k], p[k]);
@@ -602,6 +650,8 @@ ContinuationResult Continuation::run(const Vector& x0, const ContinuationSegment
     model_->clearGraphOutdated();
     if (!model_->graphCovers(*x)) model_->growGraph(*x, false);
     auto params = runParameters(*loca_, newton_, name, p[segment.parameter], lower, upper, initialStep, maxSteps, print_);
+    // the path itself is continued (the deck's Bifurcation list is for the fold curve's runs)
+    if (segment.foldParameter < 0) params->sublist("LOCA").sublist("Bifurcation").set("Type", "None");
     if (segment.foldParameter >= 0) {
       auto& bifurcation = params->sublist("LOCA").sublist("Bifurcation");
       bifurcation.set("Type", "Turning Point");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "cgcm/core/Error.hpp"
 #include "cgcm/core/ParameterValidators.hpp"
@@ -241,9 +242,15 @@ PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observe
   int step = c.resume ? c.resume->step : 0;
   bool stable = true;
   if (c.continuation) c.continuation->monitorStability(c.spectrum);
+  std::optional<PathPoint> firstFold;  // of the path in u (LOCA/Bifurcation/Type = Turning Point follows it)
   const auto track = [&](const PathState& s) {
     step = s.step;
     stable = s.stableByFolds;
+    if (s.fold && !firstFold && s.branch == 0 && !s.onFoldCurve) {
+      firstFold = PathPoint();
+      firstFold->x = Teuchos::rcp(new Vector(*s.x, Teuchos::Copy));
+      firstFold->p = s.p;
+    }
     if (!c.spectrum || s.negativeEigenvalues >= 0) return observer(s);
     // a state the continuation did not assess (displacement control, the start of a path)
     PathState assessed = s;
@@ -260,6 +267,10 @@ PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observe
     return cost;
   }
   const int index = c.model->parameterIndex(parameter_);
+  if (c.continuation->followsFolds()) {
+    followFold(firstFold, index, c, track, step, cost);
+    return cost;
+  }
   std::vector<Real> waypoints{c.model->parameter(index)};
   waypoints.insert(waypoints.end(), parameterPath_.begin(), parameterPath_.end());
   for (std::size_t k = 1; k < waypoints.size(); ++k) {
@@ -272,6 +283,43 @@ PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observe
   }
   followOtherBranches(u, c, track, step, cost);
   return cost;
+}
+
+void PathPlan::followFold(const std::optional<PathPoint>& fold, int index, PathContext& c,
+                          const PathFollower::Observer& observer, int& step, PathCost& cost) const {
+  if (!fold)
+    throw NumericalError("LOCA/Bifurcation/Type = Turning Point: the Approach Path has no fold to follow in " +
+                         parameter_ + " (no jump-to-contact at the deck's " + parameter_ + ")");
+  // the fold's null vector: the tangent's critical mode there (its eigenvalue is 0 to solver tolerance)
+  TangentSpectrum spectrum(c.model, 1);
+  const Spectrum atFold = spectrum.compute(*fold->x, fold->p);
+  for (std::size_t k = 0; k < fold->p.size(); ++k) c.model->setParameter(int(k), fold->p[k]);
+  const Real from = fold->p[std::size_t(index)], target = parameterPath_.back();
+  std::vector<Real> waypoints{from};
+  waypoints.insert(waypoints.end(), parameterPath_.begin(), parameterPath_.end());
+  ContinuationSegment segment;
+  segment.parameter = index;
+  segment.foldParameter = 0;
+  segment.nullVector = atFold.mode();
+  segment.target = target;
+  segment.direction = target > from ? 1.0 : -1.0;
+  segment.bound = runawayBound(waypoints, segment.direction, true);
+  segment.initialStep = 0.01 * std::abs(target - from);
+  segment.stopAtFold = true;  // the fold curve's extreme in the parameter: the cusp where the fold ends
+  const auto r = c.continuation->run(*fold->x, segment, [&](const PathPoint& pt) {
+    PathState s;
+    s.x = pt.x.get();
+    s.p = pt.p;
+    s.step = ++step;
+    s.iterations = pt.iterations;
+    s.residual = pt.residual;
+    s.fold = pt.fold;
+    s.onFoldCurve = true;
+    observer(s);
+  });
+  cost.continuationSteps += r.steps;
+  cost.graphRestarts += r.restarts;
+  if (!r.reached && !r.stoppedAtFold) throw NumericalError("following the fold in " + parameter_ + ": " + r.failure);
 }
 
 void PathPlan::followOtherBranches(Vector& u, PathContext& c, const PathFollower::Observer& observer, int& step,

@@ -48,10 +48,11 @@ class Recorder {
   /// last row (later rows, written after it, are dropped) and starts the curve
   /// with the checkpoint's rows.
   /// `eigenvalues` (Output/Eigenvalues): the columns negative_eigenvalues, eigenvalue_1 .. _n,
-  /// stable_by_folds and branch_point, and the critical mode in results.e; 0: none.
+  /// stable_by_folds and branch_point, and the critical mode in results.e; 0: none. `foldCurve`
+  /// (LOCA/Bifurcation/Type = Turning Point): the column fold_curve, 1 on the rows of the fold followed.
   Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,
            const std::string& dir, bool exodus, int parameterIndex, bool print, std::ostream& log,
-           const solver::Checkpoint* resume = nullptr, int eigenvalues = 0);
+           const solver::Checkpoint* resume = nullptr, int eigenvalues = 0, bool foldCurve = false);
 
   /// Steps in results.e so far (rank 0; 0 without Exodus output).
   int exodusSteps() const { return results_ ? results_->numSteps() : 0; }
@@ -67,7 +68,7 @@ class Recorder {
   solver::ModelEvaluator& model_;
   const ContactProbe* probe_;
   int parameterIndex_, eigenvalues_;
-  bool root_, print_;
+  bool foldCurve_, root_, print_;
   std::ostream& log_;
   assembly::Vector f_;
   std::vector<std::string> columns_;

@@ -142,6 +142,10 @@ class Continuation {
   /// located folds included (the start point is not repeated). Collective.
   ContinuationResult run(const Vector& x0, const ContinuationSegment& segment, const Observer& observer);
 
+  /// The deck's LOCA/Bifurcation/Type is "Turning Point": a parameter continuation follows a fold of the
+  /// path in two parameters (PathPlan) instead of the path at fixed u.
+  bool followsFolds() const;
+
   /// The full parameter list of the last run (LOCA's defaults filled in).
   const Teuchos::ParameterList& lastParameters() const { return *lastParams_; }
 

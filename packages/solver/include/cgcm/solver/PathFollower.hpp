@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct PathState {
   bool branchPoint = false;   ///< a located branch point (an eigenvalue crossing 0 without a fold)
   bool jump = false;          ///< reached by a jump from a fold (displacement control)
   int branch = 0;             ///< 0: the path; k > 0: the branch from the k-th branch point (Loading/Branch Switching)
+  bool onFoldCurve = false;   ///< a fold of the path followed in two parameters (LOCA/Bifurcation/Type = Turning Point)
   /// PathContext::spectrum: the tangent's eigenvalues nearest 0, the count of negative ones (-1: not
   /// computed) and the critical mode (TangentSpectrum).
   std::vector<Real> eigenvalues;
@@ -153,6 +155,11 @@ class PathPlan {
 
  private:
   Real runawayBound(const std::vector<Real>& waypoints, Real direction, bool positive) const;
+  /// LOCA/Bifurcation/Type = Turning Point: the first fold of the path in u followed in (u, parameter
+  /// `index`) through the Parameter Path, to its end or to the cusp where the fold ends (the fold
+  /// curve's extreme in the parameter, a located `fold` row). Throws NumericalError without a fold.
+  void followFold(const std::optional<PathPoint>& fold, int index, PathContext& context,
+                  const PathFollower::Observer& observer, int& step, PathCost& cost) const;
   /// Follows the branches of context.switches, each from its first point to the end of its path.
   void followOtherBranches(Vector& u, PathContext& context, const PathFollower::Observer& observer, int& step,
                            PathCost& cost) const;
