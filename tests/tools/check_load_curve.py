@@ -52,6 +52,10 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       point); each branch k = 1 .. N has rows, ends at a fold within A in u
       of a branch point of the path, and (--stable-branch) one of them has a
       stable row
+  cusp    CSV --column C --expected V [--tolerance REL]
+      LOCA/Bifurcation/Type = Turning Point: the last row is on the fold
+      curve (fold_curve = 1) and is its located extreme (fold = 1), where
+      column C (the continuation parameter) is the expected value
   foldsmatch ARC.csv DISP.csv [--tolerance T]
       the folds of an arc-length curve that end stable branches are where the
       displacement-controlled curve jumps (fold rows of both at the same u within T)
@@ -287,6 +291,17 @@ def bodies(a):
     return 0 if ok and good else 1
 
 
+def cusp(c, a):
+    last = len(c["u"]) - 1
+    value = c[a.column][last]
+    on = c["fold_curve"][last] > 0 and c["fold"][last] > 0
+    rel = abs(value - a.expected) / abs(a.expected)
+    print(f"last row: {a.column} = {value:.9g} (expected {a.expected:.9g}, relative difference {rel:.2g}), "
+          f"u = {c['u'][last]:.9g}, {'the located cusp' if on else 'not a located fold of the fold curve'}; "
+          f"{sum(1 for v in c['fold_curve'] if v > 0)} fold-curve rows")
+    return 0 if on and rel <= a.tolerance else 1
+
+
 def branches(c, a):
     path = [k for k, b in enumerate(c["branch"]) if b == 0]
     bps = [k for k in path if c["branch_point"][k] > 0]
@@ -382,6 +397,11 @@ def main():
     br.add_argument("--at", type=float, nargs="+", required=True)
     br.add_argument("--abs", type=float, required=True)
     br.add_argument("--stable-branch", action="store_true")
+    cu = sub.add_parser("cusp")
+    cu.add_argument("csv")
+    cu.add_argument("--column", required=True)
+    cu.add_argument("--expected", type=float, required=True)
+    cu.add_argument("--tolerance", type=float, default=1e-5)
     fm = sub.add_parser("foldsmatch")
     fm.add_argument("csv")
     fm.add_argument("other")
@@ -414,7 +434,7 @@ def main():
     c = read(a.csv)
     return {"hertz": hertz, "pulloff": pulloff, "value": value, "stiffness": stiffness, "balance": balance,
             "jumps": jumps, "folds": folds, "firstfold": firstfold,
-            "converged": converged, "returns": returns, "branches": branches}[a.cmd](c, a)
+            "converged": converged, "returns": returns, "branches": branches, "cusp": cusp}[a.cmd](c, a)
 
 
 if __name__ == "__main__":
