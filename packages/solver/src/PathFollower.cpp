@@ -11,6 +11,24 @@ namespace cgcm::solver {
 
 namespace {
 
+// An accepted state of the path from a converged continuation point, as row `step`.
+PathState stateOf(const PathPoint& pt, int step) {
+  PathState s;
+  s.x = pt.x.get();
+  s.p = pt.p;
+  s.step = step;
+  s.iterations = pt.iterations;
+  s.residual = pt.residual;
+  s.stable = pt.stable;
+  s.stableByFolds = pt.stableByFolds;
+  s.fold = pt.fold;
+  s.branchPoint = pt.branchPoint;
+  s.eigenvalues = pt.eigenvalues;
+  s.negativeEigenvalues = pt.negativeEigenvalues;
+  s.critical = pt.critical;
+  return s;
+}
+
 // Steps in u; at a fold the state jumps to the far stable branch at the same
 // u, as under a rigid loading device (LoadStepper).
 class DisplacementControl final : public PathFollower {
@@ -213,19 +231,7 @@ PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vect
   if (branchSwitching_ && c.spectrum && c.branch == 0) segment.switchAmplitude = switchAmplitude_;
   segment.stopWhen = stopWhen;
   const auto r = c.continuation->run(u, segment, [&](const PathPoint& pt) {
-    PathState s;
-    s.x = pt.x.get();
-    s.p = pt.p;
-    s.step = ++step;
-    s.iterations = pt.iterations;
-    s.residual = pt.residual;
-    s.stable = pt.stable;
-    s.stableByFolds = pt.stableByFolds;
-    s.fold = pt.fold;
-    s.branchPoint = pt.branchPoint;
-    s.eigenvalues = pt.eigenvalues;
-    s.negativeEigenvalues = pt.negativeEigenvalues;
-    s.critical = pt.critical;
+    PathState s = stateOf(pt, ++step);
     s.branch = c.branch;
     observer(s);
   });
@@ -307,13 +313,7 @@ void PathPlan::followFold(const std::optional<PathPoint>& fold, int index, PathC
   segment.initialStep = 0.01 * std::abs(target - from);
   segment.stopAtFold = true;  // the fold curve's extreme in the parameter: the cusp where the fold ends
   const auto r = c.continuation->run(*fold->x, segment, [&](const PathPoint& pt) {
-    PathState s;
-    s.x = pt.x.get();
-    s.p = pt.p;
-    s.step = ++step;
-    s.iterations = pt.iterations;
-    s.residual = pt.residual;
-    s.fold = pt.fold;
+    PathState s = stateOf(pt, ++step);
     s.onFoldCurve = true;
     observer(s);
   });
@@ -336,16 +336,7 @@ void PathPlan::followOtherBranches(Vector& u, PathContext& c, const PathFollower
                                       : *std::min_element(waypoints.begin(), waypoints.end());
     c.branch = int(k) + 1;
     // the first point of the branch, then the branch
-    PathState first;
-    first.x = sw.other.x.get();
-    first.p = sw.other.p;
-    first.step = ++step;
-    first.iterations = sw.other.iterations;
-    first.residual = sw.other.residual;
-    first.stable = first.stableByFolds = sw.other.stable;
-    first.eigenvalues = sw.other.eigenvalues;
-    first.negativeEigenvalues = sw.other.negativeEigenvalues;
-    first.critical = sw.other.critical;
+    PathState first = stateOf(sw.other, ++step);
     first.branch = c.branch;
     observer(first);
     if (direction * (target - at) <= 0.0) continue;

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "cgcm/core/Error.hpp"
-#include "cgcm/solver/ParameterizedModel.hpp"
+#include "SmallModel.hpp"
 
 namespace cgcm::test {
 
@@ -31,15 +31,13 @@ struct LennardJonesWall {
   double ddphi(double g) const { return eps * (156 * std::pow(s / g, 12) - 84 * std::pow(s / g, 6)) / (g * g); }
 };
 
-class ChainModel : public solver::ParameterizedModel {
+class ChainModel : public SmallModel {
  public:
-  using MEB = Thyra::ModelEvaluatorBase;
-  using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
-
   ChainModel(Teuchos::RCP<const assembly::Comm> comm, int n, double k, double L, LennardJonesWall wall,
              Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> solver)
-      : n_(n), k_(k), L_(L), wall_(wall), solver_(std::move(solver)) {
-    owned_ = Teuchos::rcp(new assembly::Map(n, 0, comm));
+      : SmallModel("spring chain", Teuchos::rcp(new assembly::Map(n, 0, comm)), {"lambda", "eps"}, {0.0, wall.eps},
+                   std::move(solver)),
+        n_(n), k_(k), L_(L), wall_(wall) {
     std::vector<GlobalIndex> ghosted;
     for (std::size_t l = 0; l < owned_->getNodeNumElements(); ++l) ghosted.push_back(owned_->getGlobalElement(l));
     const GlobalIndex lo = owned_->getMinGlobalIndex(), hi = owned_->getMaxGlobalIndex();
@@ -48,7 +46,7 @@ class ChainModel : public solver::ParameterizedModel {
     const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
     overlap_ = Teuchos::rcp(new assembly::Map(invalid, ghosted.data(), ghosted.size(), 0, comm));
     import_ = Teuchos::rcp(new assembly::Import(owned_, overlap_));
-    graph_ = Teuchos::rcp(new Tpetra::CrsGraph<LocalIndex, GlobalIndex, assembly::Node>(owned_, 3));
+    graph_ = Teuchos::rcp(new Graph(owned_, 3));
     for (std::size_t l = 0; l < owned_->getNodeNumElements(); ++l) {
       const GlobalIndex i = owned_->getGlobalElement(l);
       std::vector<GlobalIndex> cols;
@@ -57,18 +55,6 @@ class ChainModel : public solver::ParameterizedModel {
       graph_->insertGlobalIndices(i, cols.size(), cols.data());
     }
     graph_->fillComplete();
-    space_ = Thyra::createVectorSpace<Real>(owned_);
-    pMap_ = Teuchos::rcp(new assembly::Map(2, 0, comm, Tpetra::LocallyReplicated));
-    pSpace_ = Thyra::createVectorSpace<Real>(pMap_);
-    names_ = Teuchos::rcp(new Teuchos::Array<std::string>(Teuchos::tuple<std::string>("lambda", "eps")));
-    nominal_ = createInArgs();
-    auto x0 = Thyra::createMember(space_);
-    Thyra::assign(x0.ptr(), 0.0);
-    nominal_.set_x(x0);
-    p_ = Thyra::createMember(pSpace_);
-    Thyra::set_ele(0, 0.0, p_.ptr());
-    Thyra::set_ele(1, wall_.eps, p_.ptr());
-    nominal_.set_p(0, p_);
   }
 
   double K() const { return k_ / n_; }
@@ -109,42 +95,9 @@ class ChainModel : public solver::ParameterizedModel {
   /// Called before every evaluation with lambda; may throw to simulate a failure.
   std::function<void(double)> beforeEvaluation;
 
-  // ParameterizedModel
-  const Teuchos::Array<std::string>& parameterNames() const override { return *names_; }
-  std::vector<Real> parameters() const override { return {Thyra::get_ele(*p_, 0), Thyra::get_ele(*p_, 1)}; }
-  void setParameter(int index, Real value) override { Thyra::set_ele(index, value, p_.ptr()); }
-
-  // Thyra::ModelEvaluator
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_x_space() const override { return space_; }
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_f_space() const override { return space_; }
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_p_space(int) const override { return pSpace_; }
-  Teuchos::RCP<const Teuchos::Array<std::string>> get_p_names(int) const override { return names_; }
-  MEB::InArgs<Real> getNominalValues() const override { return nominal_; }
-  MEB::InArgs<Real> createInArgs() const override {
-    MEB::InArgsSetup<Real> in;
-    in.setModelEvalDescription("spring chain");
-    in.set_Np(1);
-    in.setSupports(MEB::IN_ARG_x);
-    return in;
-  }
-  Teuchos::RCP<Thyra::LinearOpBase<Real>> create_W_op() const override {
-    Teuchos::RCP<assembly::Operator> W = Teuchos::rcp(new assembly::CrsMatrix(graph_));
-    return Thyra::tpetraLinearOp<Real, LocalIndex, GlobalIndex, assembly::Node>(space_, space_, W);
-  }
-  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<Real>> get_W_factory() const override { return solver_; }
-
  private:
-  MEB::OutArgs<Real> createOutArgsImpl() const override {
-    MEB::OutArgsSetup<Real> out;
-    out.setModelEvalDescription("spring chain");
-    out.set_Np_Ng(1, 0);
-    out.setSupports(MEB::OUT_ARG_f);
-    out.setSupports(MEB::OUT_ARG_W_op);
-    return out;
-  }
-
   void evalModelImpl(const MEB::InArgs<Real>& in, const MEB::OutArgs<Real>& out) const override {
-    const auto& p = in.get_p(0).is_null() ? *p_ : *in.get_p(0);
+    const auto& p = parametersOf(in);
     const double lambda = Thyra::get_ele(p, 0);
     LennardJonesWall wall = wall_;
     wall.eps = Thyra::get_ele(p, 1);
@@ -182,14 +135,8 @@ class ChainModel : public solver::ParameterizedModel {
   int n_;
   double k_, L_;
   LennardJonesWall wall_;
-  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> solver_;
-  Teuchos::RCP<const assembly::Map> owned_, overlap_, pMap_;
+  Teuchos::RCP<const assembly::Map> overlap_;
   Teuchos::RCP<const assembly::Import> import_;
-  Teuchos::RCP<Tpetra::CrsGraph<LocalIndex, GlobalIndex, assembly::Node>> graph_;
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> space_, pSpace_;
-  Teuchos::RCP<const Teuchos::Array<std::string>> names_;
-  MEB::InArgs<Real> nominal_;
-  Teuchos::RCP<Thyra::VectorBase<Real>> p_;
 };
 
 }  // namespace cgcm::test

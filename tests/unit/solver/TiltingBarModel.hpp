@@ -22,33 +22,19 @@
 
 namespace cgcm::test {
 
-class TiltingBarModel : public solver::ParameterizedModel {
+class TiltingBarModel : public SmallModel {
  public:
-  using MEB = Thyra::ModelEvaluatorBase;
-  using Extract = Thyra::TpetraOperatorVectorExtraction<Real, LocalIndex, GlobalIndex, assembly::Node>;
-
   TiltingBarModel(Teuchos::RCP<const assembly::Comm> comm, double k, double kt, double l, LennardJonesWall wall,
                   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> solver)
-      : k_(k), kt_(kt), l_(l), wall_(wall), solver_(std::move(solver)) {
-    owned_ = Teuchos::rcp(new assembly::Map(2, 0, comm));
+      : SmallModel("tilting bar", Teuchos::rcp(new assembly::Map(2, 0, comm)), {"lambda"}, {0.0}, std::move(solver)),
+        k_(k), kt_(kt), l_(l), wall_(wall) {
     everywhere_ = Teuchos::rcp(new assembly::Map(2, 0, comm, Tpetra::LocallyReplicated));
     import_ = Teuchos::rcp(new assembly::Import(owned_, everywhere_));
-    graph_ = Teuchos::rcp(new Tpetra::CrsGraph<LocalIndex, GlobalIndex, assembly::Node>(owned_, 2));
+    graph_ = Teuchos::rcp(new Graph(owned_, 2));
     const GlobalIndex both[2] = {0, 1};
     for (std::size_t l = 0; l < owned_->getNodeNumElements(); ++l)
       graph_->insertGlobalIndices(owned_->getGlobalElement(LocalIndex(l)), 2, both);
     graph_->fillComplete();
-    space_ = Thyra::createVectorSpace<Real>(owned_);
-    pMap_ = Teuchos::rcp(new assembly::Map(1, 0, comm, Tpetra::LocallyReplicated));
-    pSpace_ = Thyra::createVectorSpace<Real>(pMap_);
-    names_ = Teuchos::rcp(new Teuchos::Array<std::string>(1, "lambda"));
-    nominal_ = createInArgs();
-    auto x0 = Thyra::createMember(space_);
-    Thyra::assign(x0.ptr(), 0.0);
-    nominal_.set_x(x0);
-    p_ = Thyra::createMember(pSpace_);
-    Thyra::set_ele(0, 0.0, p_.ptr());
-    nominal_.set_p(0, p_);
   }
 
   /// lambda on the level branch at height z.
@@ -79,42 +65,9 @@ class TiltingBarModel : public solver::ParameterizedModel {
     return {v(0, 0), v(1, 0)};
   }
 
-  // ParameterizedModel
-  const Teuchos::Array<std::string>& parameterNames() const override { return *names_; }
-  std::vector<Real> parameters() const override { return {Thyra::get_ele(*p_, 0)}; }
-  void setParameter(int index, Real value) override { Thyra::set_ele(index, value, p_.ptr()); }
-
-  // Thyra::ModelEvaluator
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_x_space() const override { return space_; }
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_f_space() const override { return space_; }
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> get_p_space(int) const override { return pSpace_; }
-  Teuchos::RCP<const Teuchos::Array<std::string>> get_p_names(int) const override { return names_; }
-  MEB::InArgs<Real> getNominalValues() const override { return nominal_; }
-  MEB::InArgs<Real> createInArgs() const override {
-    MEB::InArgsSetup<Real> in;
-    in.setModelEvalDescription("tilting bar");
-    in.set_Np(1);
-    in.setSupports(MEB::IN_ARG_x);
-    return in;
-  }
-  Teuchos::RCP<Thyra::LinearOpBase<Real>> create_W_op() const override {
-    Teuchos::RCP<assembly::Operator> W = Teuchos::rcp(new assembly::CrsMatrix(graph_));
-    return Thyra::tpetraLinearOp<Real, LocalIndex, GlobalIndex, assembly::Node>(space_, space_, W);
-  }
-  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<Real>> get_W_factory() const override { return solver_; }
-
  private:
-  MEB::OutArgs<Real> createOutArgsImpl() const override {
-    MEB::OutArgsSetup<Real> out;
-    out.setModelEvalDescription("tilting bar");
-    out.set_Np_Ng(1, 0);
-    out.setSupports(MEB::OUT_ARG_f);
-    out.setSupports(MEB::OUT_ARG_W_op);
-    return out;
-  }
-
   void evalModelImpl(const MEB::InArgs<Real>& in, const MEB::OutArgs<Real>& out) const override {
-    const double lambda = Thyra::get_ele(in.get_p(0).is_null() ? *p_ : *in.get_p(0), 0);
+    const double lambda = Thyra::get_ele(parametersOf(in), 0);
     const auto [z, theta] = unknowns(*Extract::getConstTpetraVector(in.get_x()));
     const double s = std::sin(theta), c = std::cos(theta), d = l_ * s;
     const double dp = wall_.dphi(z + d), dm = wall_.dphi(z - d), ddp = wall_.ddphi(z + d), ddm = wall_.ddphi(z - d);
@@ -139,14 +92,8 @@ class TiltingBarModel : public solver::ParameterizedModel {
 
   double k_, kt_, l_;
   LennardJonesWall wall_;
-  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> solver_;
-  Teuchos::RCP<const assembly::Map> owned_, everywhere_, pMap_;
+  Teuchos::RCP<const assembly::Map> everywhere_;
   Teuchos::RCP<const assembly::Import> import_;
-  Teuchos::RCP<Tpetra::CrsGraph<LocalIndex, GlobalIndex, assembly::Node>> graph_;
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> space_, pSpace_;
-  Teuchos::RCP<const Teuchos::Array<std::string>> names_;
-  MEB::InArgs<Real> nominal_;
-  Teuchos::RCP<Thyra::VectorBase<Real>> p_;
 };
 
 }  // namespace cgcm::test
