@@ -365,6 +365,8 @@ class PathStepper : public LOCA::Stepper {
       Real bestAbs = std::numeric_limits<Real>::infinity();
       auto g = [&](Real t) -> Real {
         const auto [iterations, residual] = correctorAt(*trial, t, "branch point location");
+        trial->postProcessContinuationStep(Iterator::Successful);  // the tangent of this point (its dp/ds)
+        trial->computePredictor();
         PathPoint q = point(*trial);
         q.iterations = iterations;
         q.residual = residual;
