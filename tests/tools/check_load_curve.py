@@ -52,6 +52,10 @@ Exit 0 when within tolerance, 1 otherwise; prints the measured numbers.
       point); each branch k = 1 .. N has rows, ends at a fold within A in u
       of a branch point of the path, and (--stable-branch) one of them has a
       stable row
+  criteria CSV [--min-unstable N]
+      Output/Eigenvalues: stable (from the eigenvalues) and stable_by_folds
+      (the parity of folds) agree on every row that is not a located fold or
+      branch point, there is no branch point, and at least N rows are unstable
   cusp    CSV --column C --expected V [--tolerance REL]
       LOCA/Bifurcation/Type = Turning Point: the last row is on the fold
       curve (fold_curve = 1) and is its located extreme (fold = 1), where
@@ -291,6 +295,18 @@ def bodies(a):
     return 0 if ok and good else 1
 
 
+def criteria(c, a):
+    rows = range(len(c["u"]))
+    plain = [k for k in rows if not c["fold"][k] and not c["branch_point"][k]]
+    differ = [k for k in plain if c["stable"][k] != c["stable_by_folds"][k]]
+    unstable = sum(1 for k in plain if c["stable"][k] == 0)
+    bps = sum(1 for k in rows if c["branch_point"][k])
+    print(f"{len(plain)} rows (folds and branch points aside): {unstable} unstable, {len(differ)} where the "
+          f"eigenvalues and the parity of folds differ{' (first at row ' + str(differ[0]) + ')' if differ else ''}; "
+          f"{bps} branch points")
+    return 0 if not differ and bps == 0 and unstable >= a.min_unstable else 1
+
+
 def cusp(c, a):
     last = len(c["u"]) - 1
     value = c[a.column][last]
@@ -397,6 +413,9 @@ def main():
     br.add_argument("--at", type=float, nargs="+", required=True)
     br.add_argument("--abs", type=float, required=True)
     br.add_argument("--stable-branch", action="store_true")
+    cr = sub.add_parser("criteria")
+    cr.add_argument("csv")
+    cr.add_argument("--min-unstable", type=int, default=1)
     cu = sub.add_parser("cusp")
     cu.add_argument("csv")
     cu.add_argument("--column", required=True)
@@ -434,7 +453,8 @@ def main():
     c = read(a.csv)
     return {"hertz": hertz, "pulloff": pulloff, "value": value, "stiffness": stiffness, "balance": balance,
             "jumps": jumps, "folds": folds, "firstfold": firstfold,
-            "converged": converged, "returns": returns, "branches": branches, "cusp": cusp}[a.cmd](c, a)
+            "converged": converged, "returns": returns, "branches": branches, "cusp": cusp,
+            "criteria": criteria}[a.cmd](c, a)
 
 
 if __name__ == "__main__":

@@ -12,3 +12,9 @@ cgcm_run()
 cgcm_check(COMMAND ${check} folds ${run}/load_curve.csv --expected 4 --unstable)
 # Every row written is converged (residual below 1e-10) and summary.txt says "completed".
 cgcm_check(AS converged COMMAND ${check} converged ${run}/load_curve.csv --tolerance 1e-10 --summary ${run}/summary.txt)
+# The same loop with the tangent's eigenvalues (Output/Eigenvalues = 2): stability from the eigenvalues agrees
+# with the parity of the folds on every row but the folds (marginal), there is no branch point, and the
+# unstable branches are there (23 rows).
+cgcm_run(AS eigenvalues ARGS Output/Eigenvalues=2)
+cgcm_check(AS eigenvalues_agree_with_folds FIXTURES ${name}_eigenvalues
+           COMMAND ${check} criteria ${run}_eigenvalues/load_curve.csv --min-unstable 20)
