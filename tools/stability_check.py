@@ -55,6 +55,8 @@ def run(case, args, eigen):
                "Output/Print Steps=false", "Output/Exodus=false", *case["overrides"]]
     if eigen:
         command.append(f"Output/Eigenvalues={EIGENVALUES}")
+    else:  # a deck may ask for eigenvalues itself (and for branch switching, which needs them)
+        command += ["Output/Eigenvalues=0", "Loading/Branch Switching=false"]
     if args.np > 1 and formulation(case["deck"]) == "3D":
         command = ["mpirun", "--allow-run-as-root", "--oversubscribe", "--mca", "mpi_yield_when_idle", "1",
                    "-np", str(args.np)] + command
