@@ -295,6 +295,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
       if (!state.fold) lastDisplacement = state.p[0];
     });
     result.continuationSteps = cost.continuationSteps, result.graphRestarts = cost.graphRestarts;
+    result.pathNotes = cost.notes;
     result.completed = true;
   } catch (const NumericalError& e) {
     result.failure = e.what();

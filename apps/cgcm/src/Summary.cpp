@@ -45,6 +45,7 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
                   solver::hysteresisEnergy(path));
     both(buf);
   }
+  for (const auto& note : result.pathNotes) both(("note: " + note + "\n").c_str());
   int iterations = 0, unstable = 0;
   for (const auto& pt : c) iterations += pt.newtonIterations, unstable += pt.stable ? 0 : 1;
   std::snprintf(buf, sizeof buf,

@@ -436,7 +436,9 @@ class PathStepper : public LOCA::Stepper {
       q.stableByFolds = q.stable;
       state_.result->otherBranches.push_back(q);
     } catch (const std::exception& e) {
-      state_.result->switchFailures.push_back(std::string("branch switching: ") + e.what());
+      state_.result->switchFailures.push_back("branch switching at " + owner_.model_->parameterNames()[state_.segment->parameter] +
+                                              " = " + std::to_string(at.getContinuationParameter()) + ": " + e.what() +
+                                              "; the other branch is not followed");
     }
   }
 

@@ -88,6 +88,7 @@ class ArcLengthControl final : public PathFollower {
                                            track, step);
       cost.continuationSteps += segment.continuationSteps;
       cost.graphRestarts += segment.graphRestarts;
+      cost.notes.insert(cost.notes.end(), segment.notes.begin(), segment.notes.end());
     }
     return cost;
   }
@@ -235,9 +236,10 @@ PathCost PathPlan::continueTo(Vector& u, int index, Real target, const std::vect
     s.branch = c.branch;
     observer(s);
   });
-  PathCost cost{r.steps, r.restarts};
+  PathCost cost{r.steps, r.restarts, {}};
   for (std::size_t k = 0; k < r.otherBranches.size(); ++k)
     c.switches.push_back({index, r.branchPoints.at(k), r.otherBranches[k]});
+  cost.notes = r.switchFailures;
   if (!r.reached && !r.stoppedWhen) throw NumericalError(r.failure);
   u.assign(*r.last.x);
   for (std::size_t k = 0; k < r.last.p.size(); ++k) c.model->setParameter(int(k), r.last.p[k]);
@@ -286,6 +288,7 @@ PathCost PathPlan::follow(Vector& u, PathContext& c, const PathFollower::Observe
         continueTo(u, index, waypoints[k], waypoints, 0.01 * std::abs(waypoints[k] - now), stable, c, track, step);
     cost.continuationSteps += segment.continuationSteps;
     cost.graphRestarts += segment.graphRestarts;
+    cost.notes.insert(cost.notes.end(), segment.notes.begin(), segment.notes.end());
   }
   followOtherBranches(u, c, track, step, cost);
   return cost;
@@ -360,6 +363,7 @@ void PathPlan::followOtherBranches(Vector& u, PathContext& c, const PathFollower
           continueTo(u, index, target, waypoints, initialStep, sw.other.stable, c, observer, step, rejoins);
       cost.continuationSteps += segment.continuationSteps;
       cost.graphRestarts += segment.graphRestarts;
+      cost.notes.insert(cost.notes.end(), segment.notes.begin(), segment.notes.end());
     } catch (const NumericalError& e) {
       throw NumericalError("the branch from the branch point at " + name + " = " +
                            std::to_string(sw.branchPoint.p[std::size_t(index)]) + ": " + e.what());

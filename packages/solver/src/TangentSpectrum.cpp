@@ -116,7 +116,7 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
   // the tangent at (x, p), on a matrix graph that holds the couplings of x (the path's solver last assembled one
   // at an earlier iterate)
   if (!model_->graphCovers(x)) model_->growGraph(x, false);
-  W_ = model_->create_W_op();
+  auto W = model_->create_W_op();
   auto in = model_->createInArgs();
   auto xCopy = Teuchos::rcp(new Vector(x, Teuchos::Copy));
   in.set_x(Thyra::createConstVector<Real, LocalIndex, GlobalIndex, assembly::Node>(
@@ -128,17 +128,17 @@ Spectrum TangentSpectrum::compute(const Vector& x, const std::vector<Real>& p) {
   for (std::size_t k = 0; k < all.size(); ++k) Thyra::set_ele(Teuchos::Ordinal(k), all[k], pv.ptr());
   in.set_p(0, pv);
   auto out = model_->createOutArgs();
-  out.set_W_op(W_);
+  out.set_W_op(W);
   try {
     model_->evalModel(in, out);
   } catch (const NumericalError&) {
     if (!model_->graphOutdated()) throw;
     model_->growGraph(x, true);  // couplings beyond the search radius: a wider graph, once
-    W_ = model_->create_W_op();
-    out.set_W_op(W_);
+    W = model_->create_W_op();
+    out.set_W_op(W);
     model_->evalModel(in, out);
   }
-  auto K = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(W_), true);
+  auto K = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(W), true);
 
   // the constrained dofs: unit rows (diagonal 1, every other entry 0), also as columns
   const auto rowMap = K->getRowMap(), colMap = K->getColMap();

@@ -29,6 +29,7 @@ struct RunResult {
   double distributionSeconds = 0.0;  ///< partition, each rank's subdomain, dofs, problem and solver set-up
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
+  std::vector<std::string> pathNotes;  ///< what the path could not do and went on without (solver::PathCost::notes)
   long linearSolves = 0;            ///< linear solves of Newton and relaxation (LOCA's not counted)
   long krylovIterations = 0;        ///< their Krylov iterations (0 with a direct solver)
   std::string linearSolver;         ///< Solver/Linear Solver/Type, "auto" resolved

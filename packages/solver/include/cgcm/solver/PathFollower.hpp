@@ -46,6 +46,7 @@ struct PathState {
 struct PathCost {
   int continuationSteps = 0;  ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;      ///< continuation restarts after graph rebuilds
+  std::vector<std::string> notes;  ///< what the path could not do and went on without (a branch switch that failed)
 };
 
 /// A branch point of the path and the first point of the other branch through it.

@@ -71,7 +71,6 @@ class TangentSpectrum {
  private:
   Teuchos::RCP<ParameterizedModel> model_;
   int count_, denseSize_;
-  Teuchos::RCP<Thyra::LinearOpBase<Real>> W_;
   std::unique_ptr<MumpsFactorization> mumps_;
 };
 
