@@ -62,8 +62,6 @@ class TangentSpectrum {
   TangentSpectrum(Teuchos::RCP<ParameterizedModel> model, int count, int denseSize = kDenseSize);
   ~TangentSpectrum();
 
-  int count() const { return count_; }
-
   /// The spectrum at the state (x, p): evaluates the tangent there. Throws
   /// NumericalError if the factorisation or the eigensolver fails. Collective.
   Spectrum compute(const Vector& x, const std::vector<Real>& p);
