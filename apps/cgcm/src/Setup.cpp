@@ -88,12 +88,15 @@ RCP<const ParameterList> validParameters() {
 }
 
 void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath) {
-  if (!deck.isSublist("Geometry") || !deck.sublist("Geometry").isType<std::string>("File")) return;
-  const std::filesystem::path file = deck.sublist("Geometry").get<std::string>("File");
-  if (file.empty() || file.is_absolute()) return;
+  if (!deck.isSublist("Geometry")) return;
   // absolute, so that parameters.xml (and a --restart from it) works from any folder
-  deck.sublist("Geometry").set(
-      "File", std::filesystem::absolute(std::filesystem::path(deckPath).parent_path() / file).lexically_normal().string());
+  for (const char* name : {"File", "Mesh Cache"}) {
+    if (!deck.sublist("Geometry").isType<std::string>(name)) continue;
+    const std::filesystem::path file = deck.sublist("Geometry").get<std::string>(name);
+    if (file.empty() || file.is_absolute()) continue;
+    deck.sublist("Geometry").set(
+        name, std::filesystem::absolute(std::filesystem::path(deckPath).parent_path() / file).lexically_normal().string());
+  }
 }
 
 namespace {

@@ -308,6 +308,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Summarise: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
   result.curve = recorder.curve;
   result.meshSeconds = meshSeconds, result.distributionSeconds = distributionSeconds;
+  result.meshSource = setup.model.meshSource;
   result.linearSolver = solver::resolvedLinearSolverType(linearSolverSettings, dim);
   measureCost(result, disc, newton, timingsBefore);
   if (root) writeSummary(dir + "/summary.txt", result, plan, printSteps ? &log : nullptr);

@@ -79,6 +79,7 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
   std::snprintf(buf, sizeof buf, "before the path: mesh and its checks %.3f s, distribution and set-up %.3f s\n",
                 result.meshSeconds, result.distributionSeconds);
   both(buf);
+  if (!result.meshSource.empty()) both((result.meshSource + "\n").c_str());
   if (!result.peakMemoryMB.empty()) {
     std::string line = "peak memory per rank:";
     for (std::size_t r = 0; r < result.peakMemoryMB.size(); ++r) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <iterator>
 #include <map>
 #include <sstream>
@@ -86,6 +87,7 @@ void put(core::ByteWriter& out, const Model& m) {
   out.put(m.areaFactors);
   out.put(std::uint64_t(m.report.size()));
   for (const auto& line : m.report) out.put(line);
+  out.put(m.meshSource);
 }
 
 Model getModel(core::ByteReader& in) {
@@ -107,6 +109,7 @@ Model getModel(core::ByteReader& in) {
   m.areaFactors = in.getVector<Real>();
   m.report.resize(in.getCount(sizeof(std::uint64_t)));
   for (auto& line : m.report) line = in.getString();
+  m.meshSource = in.getString();
   return m;
 }
 
@@ -148,6 +151,17 @@ Teuchos::RCP<const ParameterList> validParameters() {
                      "Type = gmsh: values for DefineConstant[] numbers of the .geo, e.g. level = 1 "
                      "(gmsh -setnumber)")
         .disableRecursiveValidation();
+    g->sublist("Gmsh Options", false,
+               "Type = gmsh with a .geo: gmsh's number options for meshing it, set over the file's, e.g. "
+               "Mesh.Algorithm3D = 10 (HXT, gmsh's parallel 3D mesher: many times faster than the default "
+               "Delaunay, a different mesh; doc/performance.md) and General.NumThreads = 2 (its threads). Each "
+               "name must be a gmsh number option")
+        .disableRecursiveValidation();
+    g->set("Mesh Cache", "",
+           "Type = gmsh with a .geo: a folder (relative: to the deck's) where the meshed .geo is kept as a "
+           "binary .msh named by a checksum of the .geo and the files it includes, Mesh Numbers, Gmsh Options, "
+           "Element Order and gmsh's version; a later run with the same key reads it instead of meshing "
+           "(summary.txt says which). Empty: mesh every run");
     g->set("Element Order", 1,
            "1: linear cells (QUAD4; HEX8, TETRA4), or 2: quadratic cells with mid-edge nodes, QUAD9 (QUAD8 with "
            "Serendipity), HEX27 (HEX20), TETRA10, whose edges and faces follow curved boundaries: the sphere's "
@@ -460,14 +474,14 @@ void buildSphereContact(const ParameterList& g, Formulation formulation, const C
 
 // Number overrides of a .geo: every entry of Geometry/Mesh Numbers, a number.
 
-std::map<std::string, double> meshNumbers(const ParameterList& numbers) {
+std::map<std::string, double> meshNumbers(const ParameterList& numbers, const std::string& sublist) {
   std::map<std::string, double> out;
   for (auto it = numbers.begin(); it != numbers.end(); ++it) {
     const auto& entry = numbers.entry(it);
     const std::string name = numbers.name(it);
     if (entry.isType<double>()) out[name] = entry.getValue<double>(nullptr);
     else if (entry.isType<int>()) out[name] = entry.getValue<int>(nullptr);
-    else throw InputError("Geometry/Mesh Numbers/" + name + ": a number is expected");
+    else throw InputError("Geometry/" + sublist + "/" + name + ": a number is expected");
   }
   return out;
 }
@@ -509,10 +523,25 @@ void buildFromGmsh(const ParameterList& g, Formulation formulation, const Contac
   if (file.empty()) throw InputError("Geometry/Type = \"gmsh\" needs Geometry/File (a gmsh .geo or .msh file)");
   mesh::GmshOptions options;
   options.dim = formulationDim(formulation);
-  if (g.isSublist("Mesh Numbers")) options.numbers = meshNumbers(g.sublist("Mesh Numbers"));
+  if (g.isSublist("Mesh Numbers")) options.numbers = meshNumbers(g.sublist("Mesh Numbers"), "Mesh Numbers");
+  if (g.isSublist("Gmsh Options")) options.gmshOptions = meshNumbers(g.sublist("Gmsh Options"), "Gmsh Options");
+  for (const auto& [name, value] : options.gmshOptions)
+    if (!mesh::isGmshNumberOption(name))
+      throw InputError("Geometry/Gmsh Options/" + name + ": not a number option of gmsh (allowed: gmsh's number "
+                       "options, e.g. Mesh.Algorithm3D, General.NumThreads, Mesh.Optimize; `gmsh -help` lists them)");
+  options.cache = g.get<std::string>("Mesh Cache");
+  if (!options.cache.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.cache, ec);
+    if (!std::filesystem::is_directory(options.cache, ec))
+      throw InputError("Geometry/Mesh Cache: \"" + options.cache + "\" is not a folder and cannot be made one");
+  }
   const ElementOrder element = elementOrder(g);
   options.element = element;
-  auto m = std::make_shared<mesh::Mesh>(mesh::readGmsh(file, options));
+  mesh::GmshProvenance provenance;
+  auto m = std::make_shared<mesh::Mesh>(mesh::readGmsh(file, options, &provenance));
+  s.report.push_back(provenance.line);
+  s.meshSource = provenance.line;
   checkElementOrder(*m, element, file);
   const auto fail = [&](const std::string& what) { throw InputError("mesh file \"" + file + "\": " + what); };
   std::string mirrored;
@@ -748,6 +777,14 @@ void checkBodiesAreHeld(const Model& s, Formulation formulation) {
 Model buildModel(const ParameterList& geometry, Formulation formulation, const ContactDistance& contactDistance) {
   Model model;
   const std::string type = geometry.get<std::string>("Type");
+  if (type != "gmsh") {  // what meshes a .geo has no meaning for a built-in mesh: not silently ignored
+    for (const char* list : {"Mesh Numbers", "Gmsh Options"})
+      if (geometry.isSublist(list) && geometry.sublist(list).numParams() > 0)
+        throw InputError(std::string("Geometry/") + list + " applies to Geometry/Type = \"gmsh\" only, not \"" +
+                         type + "\"");
+    if (!geometry.get<std::string>("Mesh Cache").empty())
+      throw InputError("Geometry/Mesh Cache applies to Geometry/Type = \"gmsh\" only, not \"" + type + "\"");
+  }
   if (type == "gmsh")
     buildFromGmsh(geometry, formulation, contactDistance, model);
   else if (type == "block")

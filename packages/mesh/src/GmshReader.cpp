@@ -1,16 +1,19 @@
 #include "cgcm/mesh/GmshReader.hpp"
 
 #include <gmsh.h>
+#include <boost/crc.hpp>
 #include <stdlib.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -465,9 +468,139 @@ class Extractor {
   std::vector<Real> coords_;
 };
 
+// The mesh cache: a meshed .geo kept as a binary .msh (exact coordinates) with
+// a checksum beside it, both named by a CRC-64 of what the mesh depends on.
+using Crc64 = boost::crc_optimal<64, 0x42F0E1EBA9EA3693ULL, ~0ULL, ~0ULL, true, true>;  // CRC-64/XZ
+
+std::string hex64(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", (unsigned long long)v);
+  return buf;
+}
+
+std::string fileBytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+std::uint64_t crcOfFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  Crc64 crc;
+  std::vector<char> chunk(1 << 20);
+  while (in) {
+    in.read(chunk.data(), std::streamsize(chunk.size()));
+    crc.process_bytes(chunk.data(), std::size_t(in.gcount()));
+  }
+  return crc.checksum();
+}
+
+// The contents of a .geo and of the files it Includes or Merges, recursively
+// (not their paths: a moved project keeps its cache).
+void addSources(const fs::path& file, std::set<fs::path>& seen, std::string& key) {
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(file, ec);
+  if (!seen.insert(ec ? file : canonical).second) return;
+  const std::string text = fileBytes(file);  // a missing file adds nothing; gmsh reports it
+  key += "source " + std::to_string(text.size()) + "\n" + text + "\n";
+  static const std::regex reference("\\b(?:Include|Merge)\\s*\"([^\"]+)\"");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), reference); it != std::sregex_iterator(); ++it)
+    addSources(file.parent_path() / (*it)[1].str(), seen, key);
+}
+
+std::string cacheKey(const std::string& path, const GmshOptions& options) {
+  char buf[64];
+  std::string key = "cgcm mesh cache 1\ngmsh " GMSH_API_VERSION "\ndim " + std::to_string(options.dim) +
+                    "\norder " + std::to_string(options.element.order) + " serendipity " +
+                    std::to_string(int(options.element.serendipity)) + "\n";
+  for (const auto* values : {&options.numbers, &options.gmshOptions}) {
+    key += "values\n";
+    for (const auto& [name, value] : *values) {
+      std::snprintf(buf, sizeof buf, "%.17g", value);
+      key += name + " = " + buf + "\n";
+    }
+  }
+  std::set<fs::path> seen;
+  addSources(path, seen, key);
+  Crc64 crc;
+  crc.process_bytes(key.data(), key.size());
+  return fs::path(path).stem().string() + "-" + hex64(crc.checksum());
+}
+
+// Inside a session.
+bool knownNumberOption(const std::string& name) {
+  if (name.find('.') == std::string::npos) return false;
+  try {
+    double current = 0.0;
+    gmsh::option::getNumber(name, current);
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
+// Each caller-given gmsh option must be a number option of this gmsh.
+void checkGmshOptions(const std::map<std::string, double>& gmshOptions) {
+  for (const auto& [name, value] : gmshOptions) {
+    if (!knownNumberOption(name))
+      throw InputError("gmsh option " + inQuotes(name) + ": not a number option of gmsh " GMSH_API_VERSION
+                       " (e.g. Mesh.Algorithm3D, General.NumThreads, Mesh.Optimize; gmsh -help lists them)");
+    if (!std::isfinite(value)) throw InputError("gmsh option " + inQuotes(name) + " is not finite");
+  }
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", s);
+  return buf;
+}
+
+// Keeps the meshed model in the cache: written beside its final name, then
+// renamed, the checksum last (a killed run leaves no file that looks valid).
+// A failure to write is reported, not fatal: the run has its mesh.
+std::string keepInCache(const fs::path& msh, const fs::path& sum) {
+  const std::string part = ".part-" + std::to_string(getpid());
+  // gmsh picks the format by the extension: .msh last
+  const fs::path mshPart = msh.parent_path() / (msh.stem().string() + part + ".msh"), sumPart = sum.string() + part;
+  try {
+    gmsh::option::setNumber("Mesh.Binary", 1);   // exact coordinates, fast to read
+    gmsh::option::setNumber("Mesh.SaveAll", 1);  // every cell, in a physical group or not
+    gmsh::write(mshPart.string());
+    if (!fs::is_regular_file(mshPart)) throw std::runtime_error("not written");
+    std::ofstream(sumPart) << hex64(crcOfFile(mshPart)) << "\n";
+    fs::rename(mshPart, msh);
+    fs::rename(sumPart, sum);
+    return ", kept in " + msh.string();
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(mshPart, ec);
+    fs::remove(sumPart, ec);
+    return "; could not be kept in " + msh.string() + " (is the folder writable?)";
+  }
+}
+
+bool cacheValid(const fs::path& msh, const fs::path& sum) {
+  std::error_code ec;
+  if (!fs::is_regular_file(msh, ec) || !fs::is_regular_file(sum, ec)) return false;
+  std::string expected;
+  std::ifstream(sum) >> expected;
+  return expected == hex64(crcOfFile(msh));
+}
+
 }  // namespace
 
-Mesh readGmsh(const std::string& path, const GmshOptions& options) {
+bool isGmshNumberOption(const std::string& name) {
+  std::lock_guard<std::mutex> lock(gmshMutex);
+  GmshSession session(false);
+  return knownNumberOption(name);
+}
+
+Mesh readGmsh(const std::string& path, const GmshOptions& options, GmshProvenance* provenance) {
   if (options.dim != 2 && options.dim != 3)
     throw InputError("readGmsh: the mesh dimension must be 2 or 3, got " + std::to_string(options.dim));
   if (options.element.order != 1 && options.element.order != 2)
@@ -482,11 +615,32 @@ Mesh readGmsh(const std::string& path, const GmshOptions& options) {
   const bool geo = ext == ".geo";
   if (!geo && !options.numbers.empty())
     throw InputError("mesh file " + inQuotes(path) + ": number overrides apply to .geo files only");
+  if (!geo && !options.gmshOptions.empty())
+    throw InputError("mesh file " + inQuotes(path) + ": gmsh options apply to meshing a .geo only");
+  if (!geo && !options.cache.empty())
+    throw InputError("mesh file " + inQuotes(path) + ": a mesh cache applies to meshing a .geo only");
   if (geo) checkGeo(path, options.numbers);
 
   std::lock_guard<std::mutex> lock(gmshMutex);
   GmshSession session(options.verbose);
+  const auto start = std::chrono::steady_clock::now();
   try {
+    checkGmshOptions(options.gmshOptions);
+    std::string line;
+    fs::path cachedMsh, cachedSum;
+    if (geo && !options.cache.empty()) {
+      const std::string key = cacheKey(path, options);
+      cachedMsh = fs::path(options.cache) / (key + ".msh");
+      cachedSum = fs::path(options.cache) / (key + ".crc64");
+      if (cacheValid(cachedMsh, cachedSum)) {
+        gmsh::merge(cachedMsh.string());
+        Mesh m = Extractor(path, options.dim).run();
+        if (provenance) provenance->line = "mesh read from " + cachedMsh.string() + " in " + seconds(secondsSince(start));
+        return m;
+      }
+      std::error_code ec;
+      if (fs::exists(cachedMsh, ec)) line = " (" + cachedMsh.string() + " failed its checksum: meshed again)";
+    }
     if (!options.numbers.empty()) {
       OverrideFile overrides(options.numbers);
       gmsh::merge(overrides.path);
@@ -497,9 +651,14 @@ Mesh readGmsh(const std::string& path, const GmshOptions& options) {
       gmsh::option::setNumber("Mesh.ElementOrder", options.element.order);
       gmsh::option::setNumber("Mesh.SecondOrderIncomplete", options.element.serendipity ? 1 : 0);
       gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);
+      for (const auto& [name, value] : options.gmshOptions) gmsh::option::setNumber(name, value);
       gmsh::model::mesh::generate(options.dim);
+      line = "meshed by gmsh in " + seconds(secondsSince(start)) + line;
+      if (!cachedMsh.empty()) line += keepInCache(cachedMsh, cachedSum);
     }
-    return Extractor(path, options.dim).run();
+    Mesh m = Extractor(path, options.dim).run();
+    if (provenance) provenance->line = geo ? line : "mesh read from " + path + " in " + seconds(secondsSince(start));
+    return m;
   } catch (const InputError&) {
     throw;
   } catch (const std::string& message) {  // gmsh reports errors by throwing their text

@@ -12,7 +12,7 @@ namespace cgcm::app {
 /// Every parameter a deck may hold, with defaults and documentation.
 Teuchos::RCP<const Teuchos::ParameterList> validParameters();
 
-/// Makes a relative Geometry/File absolute, taking it from the folder of the
+/// Makes a relative Geometry/File and Geometry/Mesh Cache absolute, taking them from the folder of the
 /// deck file `deckPath` (before validation; nothing to do without one).
 void resolveMeshFile(Teuchos::ParameterList& deck, const std::string& deckPath);
 

@@ -27,6 +27,7 @@ struct RunResult {
   double pathSeconds = 0.0;         ///< the whole path, failed attempts included
   double meshSeconds = 0.0;         ///< building the problem: the mesh (gmsh, generators) and its checks
   double distributionSeconds = 0.0;  ///< partition, each rank's subdomain, dofs, problem and solver set-up
+  std::string meshSource;            ///< how the mesh was obtained (mesh::Model::meshSource)
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds
   std::vector<std::string> pathNotes;  ///< what the path could not do and went on without (solver::PathCost::notes)

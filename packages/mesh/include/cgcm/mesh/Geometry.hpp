@@ -69,6 +69,9 @@ struct Model {
     return youngsModulus;
   }
   std::vector<std::string> report;  ///< what the run's log says about the model
+  /// How the mesh was obtained (Type = gmsh: meshed, or read from the mesh cache, and in how long); empty
+  /// for the built-in meshes. Also a line of the report.
+  std::string meshSource;
 };
 
 /// Makes each force response whose nodes all lie in body `body` (named

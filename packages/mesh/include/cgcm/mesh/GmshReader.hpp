@@ -50,13 +50,35 @@ struct GmshOptions {
   /// -setnumber semantics): each name must be one of the file's
   /// DefineConstant entries. Not allowed for a .msh.
   std::map<std::string, double> numbers;
+  /// gmsh's own number options for meshing a .geo, e.g. Mesh.Algorithm3D = 10
+  /// (HXT, the parallel 3D mesher) or General.NumThreads = 2, set after the
+  /// file is merged (the caller's choice over the file's). Each name must be a
+  /// gmsh number option. Not allowed for a .msh.
+  std::map<std::string, double> gmshOptions;
+  /// A folder in which a meshed .geo is kept as a binary .msh, named by a
+  /// CRC-64 of everything the mesh depends on (the .geo and the files it
+  /// Includes, numbers, gmsh options, element order, dimension, gmsh's
+  /// version); a later read with the same key reads the .msh instead of
+  /// meshing. Empty: no cache. A cached file whose checksum does not match is
+  /// meshed again and replaced.
+  std::string cache;
   bool verbose = false;  ///< let gmsh print its progress (General.Terminal = 1)
   ElementOrder element;  ///< the cells a .geo is meshed with (a .msh: ignored)
 };
 
+/// How a mesh was obtained: one line for the run's summary, e.g. "meshed by
+/// gmsh in 18.2 s, kept in cache/x-0123.msh" or "read from cache/x-0123.msh
+/// in 2.1 s".
+struct GmshProvenance {
+  std::string line;
+};
+
+/// Whether `name` (e.g. "Mesh.Algorithm3D") is a number option of the gmsh library.
+bool isGmshNumberOption(const std::string& name);
+
 /// Reads `path` (.geo or .msh) into a Mesh of dimension options.dim following
 /// the convention above. Throws InputError naming the file on any problem.
 /// Serialised internally: gmsh holds global state and is not reentrant.
-Mesh readGmsh(const std::string& path, const GmshOptions& options);
+Mesh readGmsh(const std::string& path, const GmshOptions& options, GmshProvenance* provenance = nullptr);
 
 }  // namespace cgcm::mesh
