@@ -197,10 +197,62 @@ InteractionSetup fromParameters(const ParameterList& in, const ReferenceScales& 
 
 Real InteractionSetup::contactDistance() const { return LennardJones::surfaceEquilibriumDistance(potential->r0()); }
 
+namespace {
+
+// The symmetry planes of a mesh that is a symmetric part of its model, for Method 1's image
+// cells: "symmetry x|y|z", checked to be the part x_i >= 0 with the set on x_i = 0; in plane
+// strain also "axis", the symmetry line x = 0, unless the mesh has nodes on both sides of it (a
+// model mirrored in x keeps its "axis" as an interior line, Geometry/Mirror Planes); in
+// axisymmetry x = 0 is the axis, no plane. A body with a node on a plane is cut by it (the rule
+// of mesh::mirror: it is one body with its image).
+void setSymmetryPlanes(const mesh::Mesh& mesh, Formulation formulation, VolumeInteractionOptions& options) {
+  static const char* axes = "xyz";
+  options.symmetryPlanes = 0;
+  options.bodySymmetryPlanes.assign(std::size_t(mesh.numBodies), 0);
+  Real extent = 0.0;
+  for (Real x : mesh.coords) extent = std::max(extent, std::abs(x));
+  const Real tolerance = 1e-9 * std::max(extent, Real(1e-300));
+  std::vector<int> nodeBody(std::size_t(mesh.numNodes()), -1);
+  for (const auto& b : mesh.blocks)
+    for (LocalIndex n : b.connectivity) nodeBody[std::size_t(n)] = b.body;
+  for (int i = 0; i < mesh.dim; ++i) {
+    if (i == 0 && formulation == Formulation::Axisymmetric) continue;
+    const std::string name = std::string("symmetry ") + axes[i];
+    const bool line = i == 0 && formulation == Formulation::PlaneStrain && mesh.nodeSets.count("axis");
+    if (!mesh.nodeSets.count(name) && !line) continue;
+    const std::string set = mesh.nodeSets.count(name) ? name : "axis";
+    if (set == "axis") {
+      bool bothSides = false;
+      for (LocalIndex n = 0; n < mesh.numNodes() && !bothSides; ++n) bothSides = mesh.coord(n, 0) < -tolerance;
+      if (bothSides) continue;
+    }
+    const std::string what = "Interaction/Method = \"volume pair\" on a mesh with the node set \"" + set +
+                             "\": it integrates over the whole model through mirror images, so the mesh must be "
+                             "the part " + axes[i] + " >= 0 of a model symmetric in " + axes[i] + " = 0, but ";
+    for (LocalIndex n : mesh.nodeSet(set))
+      if (std::abs(mesh.coord(n, i)) > tolerance)
+        throw InputError(what + "its node " + std::to_string(n) + " has " + axes[i] + " = " +
+                         std::to_string(mesh.coord(n, i)));
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n) {
+      if (mesh.coord(n, i) < -tolerance)
+        throw InputError(what + "node " + std::to_string(n) + " has " + axes[i] + " = " +
+                         std::to_string(mesh.coord(n, i)) + " (mirror the mesh: Geometry/Mirror Planes)");
+      if (std::abs(mesh.coord(n, i)) <= tolerance && nodeBody[std::size_t(n)] >= 0)
+        options.bodySymmetryPlanes[std::size_t(nodeBody[std::size_t(n)])] |= 1 << i;
+    }
+    options.symmetryPlanes |= 1 << i;
+  }
+}
+
+}  // namespace
+
 std::shared_ptr<Interaction> InteractionSetup::create(const mesh::Mesh& mesh) const {
   const std::vector<Real> densities(std::size_t(mesh.numBodies), density);
-  if (method == Method::VolumePair)
-    return std::make_shared<VolumeInteraction>(mesh, densities, potential, volumeOptions);
+  if (method == Method::VolumePair) {
+    VolumeInteractionOptions options = volumeOptions;
+    setSymmetryPlanes(mesh, volumeOptions.formulation, options);
+    return std::make_shared<VolumeInteraction>(mesh, densities, potential, options);
+  }
   auto surface = std::make_shared<SurfaceInteraction>(mesh.surfaces, densities, potential, surfaceOptions);
   // the table of dA only where it is read
   if (surfaceOptions.surfaceDensity == SurfaceDensity::ReferenceArea) surface->setReferenceConfiguration(mesh.coords);
@@ -222,28 +274,17 @@ std::vector<ScalarParameter> InteractionSetup::scalarParameters(std::shared_ptr<
 }
 
 void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation) const {
-  // Method 1 integrates over the cells the mesh has: a symmetry plane (or, in
-  // plane strain, the symmetry line of the built-in half models) would drop
-  // the mirror half of every body from the interaction.
+  // Method 1 integrates over the cells the mesh has and their mirror images across its symmetry planes.
   if (method != Method::VolumePair) return;
-  std::vector<std::string> planes;
-  for (const char* set : {"symmetry x", "symmetry y", "symmetry z"})
-    if (mesh.nodeSets.count(set)) planes.push_back(set);
-  if (formulation == Formulation::PlaneStrain && mesh.nodeSets.count("axis"))
-    planes.push_back("axis (a symmetry line in plane strain)");
-  if (!planes.empty()) {
-    std::string list;
-    for (const auto& p : planes) list += (list.empty() ? "\"" : ", \"") + p + "\"";
-    throw InputError("Interaction/Method = \"volume pair\" integrates over the whole bodies, but the mesh is a "
-                     "symmetric part of them (" + list + "): mirror it (Geometry/Mirror Planes) or use "
-                     "\"half-space point\"");
-  }
+  VolumeInteractionOptions options = volumeOptions;
+  options.formulation = formulation;
+  setSymmetryPlanes(mesh, formulation, options);
   // The cells that meet first must be integrated to the tolerance when they are in contact
   // (at kContactGapFloor r0): the rule's error grows with cell size over gap, and beyond about
   // 4 no order up to the kernel's most brings it down (doc/theory.md#method-1).
   if (volumeOptions.quadratureTolerance <= 0.0) return;
   const VolumeInteraction volume(mesh, std::vector<Real>(std::size_t(mesh.numBodies), density), potential,
-                                 volumeOptions);
+                                 options);
   std::vector<char> surfaceCells(std::size_t(mesh.numCells()), 0);
   for (const auto& surface : mesh.surfaces)
     for (LocalIndex cell : surface.facetCells)

@@ -171,6 +171,17 @@ VolumeInteraction::VolumeInteraction(const mesh::Mesh& mesh, std::vector<Real> d
                      std::to_string(options_.quadratureTolerance));
   if (std::isnan(options_.cutoff) || std::isnan(options_.skin) || std::isinf(options_.skin))
     throw InputError(where() + "cutoff and skin must be numbers (the skin finite)");
+  const int allPlanes = (1 << dim_) - 1;
+  if (options_.symmetryPlanes & ~allPlanes)
+    throw InputError(where() + "symmetry planes beyond the mesh's " + std::to_string(dim_) + " axes");
+  if (options_.formulation == Formulation::Axisymmetric && (options_.symmetryPlanes & 1))
+    throw InputError(where() + "x = 0 is the axis of an axisymmetric model, not a symmetry plane");
+  if (!options_.bodySymmetryPlanes.empty() && int(options_.bodySymmetryPlanes.size()) != numBodies_)
+    throw InputError(where() + std::to_string(options_.bodySymmetryPlanes.size()) +
+                     " bodies' symmetry planes for " + std::to_string(numBodies_) + " bodies");
+  for (int planes : options_.bodySymmetryPlanes)
+    if (planes & ~options_.symmetryPlanes)
+      throw InputError(where() + "a body is cut by a plane that is not a symmetry plane of the model");
   cutoff1_ = options_.cutoff > 0.0 ? options_.cutoff : 10.0 * potential_->r0();
   skin1_ = options_.skin > 0.0 ? options_.skin : potential_->r0();
 
@@ -256,29 +267,57 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
       boxes[b].emplace_back(lo, hi, c);
     }
   std::vector<Candidate> out;
+  const int planes = options_.symmetryPlanes;
   for (int k = 0; k < numBodies_; ++k)
-    for (int l = k + 1; l < numBodies_; ++l) {
-      if (boxes[k].empty() || boxes[l].empty()) continue;
-      auto report = [&](const Box& p, const Box& q) {
-        const std::array<Real, 6>&bp = bounds[p.info()], &bq = bounds[q.info()];
-        Real gap2 = 0.0;
-        for (int i = 0; i < 3; ++i) {
-          const Real g = std::max({0.0, bp[i] - bq[3 + i], bq[i] - bp[3 + i]});
-          gap2 += g * g;
+    for (int l = k; l < numBodies_; ++l)
+      for (int image = 0; image <= planes; ++image) {
+        if ((image & ~planes) || boxes[k].empty() || boxes[l].empty()) continue;  // images: subsets of the planes
+        // a body meets its image only where that is another body of the whole model
+        const int cutting = options_.bodySymmetryPlanes.empty() ? 0 : options_.bodySymmetryPlanes[k];
+        if (k == l && !(image & ~cutting)) continue;
+        auto mirrored = [&](std::array<Real, 6> b) {
+          for (int i = 0; i < 3; ++i)
+            if (image & (1 << i)) {
+              const Real lo = b[i];
+              b[i] = -b[3 + i];
+              b[3 + i] = -lo;
+            }
+          return b;
+        };
+        auto report = [&](const Box& p, const Box& q) {
+          const std::array<Real, 6>& bp = bounds[p.info()];
+          const std::array<Real, 6> bq = mirrored(bounds[q.info()]);
+          Real gap2 = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            const Real g = std::max({0.0, bp[i] - bq[3 + i], bq[i] - bp[3 + i]});
+            gap2 += g * g;
+          }
+          if (gap2 > radius * radius) return;  // the boxes' corners are farther apart
+          const Real gap = std::sqrt(gap2), size = std::max(sizes[p.info()], sizes[q.info()]);
+          const bool tet = cellTypeInfo(CellType(view_.cellType(p.info()))).simplex ||
+                           cellTypeInfo(CellType(view_.cellType(q.info()))).simplex;
+          out.push_back({p.info(), q.info(), image, gap, size, tet});
+          // the reverse direction (the mirror is its own inverse: the same gap); a body and its own
+          // image: intersecting both ways round, reported both ways round
+          if (k != l) out.push_back({q.info(), p.info(), image, gap, size, tet});
+        };
+        // box_intersection_d reorders its inputs: work on copies (of body l: its image, new boxes)
+        std::vector<Box> bk = boxes[k], bl;
+        bl.reserve(boxes[l].size());
+        for (const Box& b : boxes[l]) {
+          double lo[3], hi[3];
+          for (int i = 0; i < 3; ++i) {
+            const bool flip = image & (1 << i);
+            lo[i] = flip ? -b.max_coord(i) : b.min_coord(i);
+            hi[i] = flip ? -b.min_coord(i) : b.max_coord(i);
+          }
+          bl.emplace_back(lo, hi, b.info());
         }
-        if (gap2 > radius * radius) return;  // the boxes' corners are farther apart
-        const Real gap = std::sqrt(gap2), size = std::max(sizes[p.info()], sizes[q.info()]);
-        const bool tet = cellTypeInfo(CellType(view_.cellType(p.info()))).simplex ||
-                         cellTypeInfo(CellType(view_.cellType(q.info()))).simplex;
-        out.push_back({p.info(), q.info(), gap, size, tet});
-        out.push_back({q.info(), p.info(), gap, size, tet});
-      };
-      // box_intersection_d reorders its inputs: work on copies
-      std::vector<Box> bk = boxes[k], bl = boxes[l];
-      CGAL::box_intersection_d(bk.begin(), bk.end(), bl.begin(), bl.end(), report);
-    }
+        CGAL::box_intersection_d(bk.begin(), bk.end(), bl.begin(), bl.end(), report);
+      }
   std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
-    return a.rowCell != b.rowCell ? a.rowCell < b.rowCell : a.colCell < b.colCell;
+    return a.rowCell != b.rowCell ? a.rowCell < b.rowCell
+                                  : a.colCell != b.colCell ? a.colCell < b.colCell : a.image < b.image;
   });
   return out;
 }
@@ -456,7 +495,7 @@ bool VolumeInteraction::updatePairs(const Real* coords) {
   for (const Candidate& c : candidates(coords, cutoff + skin)) {
     if (!rowCells_.empty() && !rowCells_[c.rowCell]) continue;
     const OrderChoice choice = chooseOrder(c.size, c.gap, c.tet);
-    pairs_.push_back({c.rowCell, c.colCell, choice.order});
+    pairs_.push_back({c.rowCell, c.colCell, choice.order, c.image});
     const int cap = c.tet ? std::min(maxOrder_, kMaxTetOrder) : maxOrder_;
     summary_.maxOrderUsed = std::max(summary_.maxOrderUsed, choice.order);
     summary_.maxErrorEstimate = std::max(summary_.maxErrorEstimate, choice.estimate);

@@ -24,6 +24,8 @@
 #include "cgcm/mesh/Benchmark.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/mesh/Mesh.hpp"
+#include "cgcm/mesh/Mirror.hpp"
+#include "cgcm/interaction/InteractionSetup.hpp"
 
 namespace cgcm::interaction {
 namespace {
@@ -665,6 +667,139 @@ TEST(VolumeInteraction, RowCellsSplitThePairsBetweenRanks) {
   Real fmax = 0.0;
   for (Real v : full.f) fmax = std::max(fmax, std::abs(v));
   for (std::size_t i = 0; i < sum.size(); ++i) EXPECT_NEAR(sum[i], full.f[i], 1e-13 * fmax) << "dof " << i;
+}
+
+// ---- symmetric parts: image cells --------------------------------------
+
+// The part x >= 0 (and y >= 0 in 3D) of a symmetric model of three bodies: two cut by the
+// planes, one beside them that only y = 0 cuts (its image in x = 0 is another body of the whole
+// model, which it interacts with). Jittered cells, the nodes on the planes kept on them.
+mesh::Mesh symmetricPart(int dim) {
+  mesh::Mesh m;
+  m.dim = dim;
+  const CellType type = dim == 3 ? CellType::Hex8 : CellType::Quad4;
+  const int cells[3] = {2, 1, 2};
+  const int planes = dim == 3 ? 2 : 1;  // x (and y)
+  const Real o0[3] = {0.0, 0.0, 0.0}, s0[3] = {0.6, 0.5, 0.7};
+  const Real o1[3] = {0.0, 0.85, 0.0}, s1[3] = {0.7, 0.6, 0.8};    // 2D: above along y
+  const Real o1z[3] = {0.0, 0.0, 0.85};                              // 3D: above along z
+  const Real o2[3] = {0.25, -0.7, 0.0}, o2z[3] = {0.25, 0.0, -0.65}, s2[3] = {0.3, 0.4, 0.4};
+  addBlock(m, 0, type, o0, s0, cells, 0.08, 1);
+  addBlock(m, 1, type, dim == 3 ? o1z : o1, s1, cells, 0.08, 2);
+  addBlock(m, 2, type, dim == 3 ? o2z : o2, s2, cells, 0.08, 3);
+  for (LocalIndex n = 0; n < m.numNodes(); ++n)
+    for (int i = 0; i < planes; ++i)
+      if (std::abs(m.coords[std::size_t(dim) * n + i]) < 0.1) m.coords[std::size_t(dim) * n + i] = 0.0;
+  for (int i = 0; i < planes; ++i) {
+    auto& set = m.nodeSets[std::string("symmetry ") + "xy"[i]];
+    for (LocalIndex n = 0; n < m.numNodes(); ++n)
+      if (m.coords[std::size_t(dim) * n + i] == 0.0) set.push_back(n);
+  }
+  mesh::buildSurfaces(m);
+  return m;
+}
+
+// Method 1 on a symmetric part with image cells: the forces on its nodes are the whole (mirrored)
+// model's to round-off (on a plane: their share), its energy the whole's over the number of images, its forces the gradient
+// of its energy and its tangent their derivative (central differences).
+void checkImagesActAsTheWholeModel(int dim) {
+  const Formulation f = dim == 3 ? Formulation::ThreeD : Formulation::PlaneStrain;
+  const mesh::Mesh part = symmetricPart(dim);
+  mesh::Mesh whole = part;
+  for (int i = 0; i < (dim == 3 ? 2 : 1); ++i) mesh::mirror(whole, i);
+  ASSERT_EQ(whole.numBodies, 4);  // body 2 and its image in x = 0 are two
+  VolumeInteractionOptions o;
+  o.formulation = f;
+  o.quadratureOrder = 2;
+  o.quadratureTolerance = 0.0;  // the same rule for every pair of both models
+  o.cutoff = 1e3;
+  auto pot = std::make_shared<LennardJones>(0.7, 0.3);
+  VolumeInteraction all(whole, std::vector<Real>(4, 1.0), pot, o);
+
+  // the planes as the interaction set-up finds them from the node sets
+  InteractionSetup setup;
+  setup.method = Method::VolumePair;
+  setup.potential = pot;
+  setup.volumeOptions = o;
+  setup.checkMesh(part, f);
+  auto created = std::dynamic_pointer_cast<VolumeInteraction>(setup.create(part));
+  ASSERT_TRUE(created);
+  const int planes = dim == 3 ? 3 : 1;
+  EXPECT_EQ(created->options().symmetryPlanes, planes);
+  EXPECT_EQ(created->options().bodySymmetryPlanes, (std::vector<int>{planes, planes, planes & ~1}));
+  VolumeInteraction& mine = *created;
+
+  ASSERT_TRUE(mine.updatePairs(part.coords.data()));
+  ASSERT_TRUE(all.updatePairs(whole.coords.data()));
+  const Assembled a = assemble(mine, part.coords, true);
+  const Assembled w = assemble(all, whole.coords, false);
+  const Real images = dim == 3 ? 4.0 : 2.0;
+  EXPECT_NEAR(images * mine.summary().energy, all.summary().energy, 1e-12 * std::abs(all.summary().energy));
+  EXPECT_LT(all.summary().energy, 0.0);
+  std::map<std::vector<Real>, LocalIndex> wholeNode;
+  for (LocalIndex n = 0; n < whole.numNodes(); ++n)
+    wholeNode[std::vector<Real>(whole.coords.begin() + dim * n, whole.coords.begin() + dim * (n + 1))] = n;
+  Real fmax = 0.0;
+  for (Real v : w.f) fmax = std::max(fmax, std::abs(v));
+  for (LocalIndex n = 0; n < part.numNodes(); ++n) {
+    const auto it = wholeNode.find(std::vector<Real>(part.coords.begin() + dim * n, part.coords.begin() + dim * (n + 1)));
+    ASSERT_NE(it, wholeNode.end()) << "node " << n;
+    // a node on k planes is its own image 2^k times: the whole model's force there is 2^k times the
+    // part's in the planes, and 0 across them (the part's, there, meets the symmetry condition)
+    Real multiplicity = 1.0;
+    for (int i = 0; i < dim; ++i)
+      if (planes & (1 << i) && part.coords[dim * n + i] == 0.0) multiplicity *= 2.0;
+    for (int i = 0; i < dim; ++i) {
+      const bool across = planes & (1 << i) && part.coords[dim * n + i] == 0.0;
+      EXPECT_NEAR(across ? 0.0 : multiplicity * a.f[dim * n + i], w.f[dim * it->second + i], 1e-12 * fmax)
+          << "node " << n << " component " << i;
+    }
+  }
+
+  const std::vector<Real>& x = part.coords;
+  const Real h = 1e-6;
+  Real kmax = 0.0;
+  for (const auto& [ij, v] : a.K) kmax = std::max(kmax, std::abs(v));
+  for (std::size_t dof = 0; dof < x.size(); ++dof) {
+    std::vector<Real> xp = x, xm = x;
+    xp[dof] += h;
+    xm[dof] -= h;
+    EXPECT_NEAR(a.f[dof], (mine.energy(xp.data()) - mine.energy(xm.data())) / (2 * h), 1e-6 * fmax) << "dof " << dof;
+    const Assembled ap = assemble(mine, xp, false), am = assemble(mine, xm, false);
+    for (std::size_t row = 0; row < x.size(); ++row) {
+      const auto it = a.K.find({int(row), int(dof)});
+      const Real exact = it == a.K.end() ? 0.0 : it->second;
+      EXPECT_NEAR(exact, (ap.f[row] - am.f[row]) / (2 * h), 1e-6 * kmax) << "row " << row << " col " << dof;
+    }
+  }
+}
+
+TEST(VolumeInteraction, ImageCellsActAsTheWholeModelInPlaneStrain) { checkImagesActAsTheWholeModel(2); }
+TEST(VolumeInteraction, ImageCellsActAsTheWholeModelIn3D) { checkImagesActAsTheWholeModel(3); }
+
+TEST(VolumeInteraction, SymmetricPartMustLieOnThePositiveSide) {
+  mesh::Mesh part = symmetricPart(3);
+  InteractionSetup setup;
+  setup.method = Method::VolumePair;
+  setup.potential = std::make_shared<LennardJones>(0.7, 0.3);
+  setup.volumeOptions.formulation = Formulation::ThreeD;
+  setup.volumeOptions.quadratureTolerance = 0.0;
+  auto errorOf = [&](const mesh::Mesh& m) {
+    try {
+      setup.checkMesh(m, Formulation::ThreeD);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no InputError");
+  };
+  EXPECT_EQ(errorOf(part), "no InputError");
+  mesh::Mesh across = part;
+  across.coords[3 * 5 + 0] = -0.01;  // node 5 on the other side of x = 0
+  EXPECT_NE(errorOf(across).find("\"symmetry x\""), std::string::npos) << errorOf(across);
+  EXPECT_NE(errorOf(across).find("node 5 has x = -0.01"), std::string::npos) << errorOf(across);
+  mesh::Mesh offPlane = part;
+  offPlane.nodeSets["symmetry y"].push_back(LocalIndex(offPlane.numNodes() - 1));  // a node at y > 0
+  EXPECT_NE(errorOf(offPlane).find("the part y >= 0"), std::string::npos) << errorOf(offPlane);
 }
 
 TEST(VolumeInteraction, RejectsBadInput) {

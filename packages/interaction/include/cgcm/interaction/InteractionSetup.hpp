@@ -54,8 +54,9 @@ struct InteractionSetup {
   /// epsilon (the strength) by gammaW0 / gammaW; gammaL = R0 / r0 at fixed
   /// gammaW scales r0 (the length) by gammaL0 / gammaL with epsilon r0^3 fixed.
   std::vector<ScalarParameter> scalarParameters(std::shared_ptr<Interaction> interaction) const;
-  /// Throws InputError if the method cannot integrate over `mesh`: Method 1 needs the
-  /// whole bodies, not a symmetric part of them (both methods take every cell type).
+  /// Throws InputError if the method cannot integrate over `mesh`: Method 1 on a symmetric part
+  /// (node sets "symmetry x|y|z", in plane strain "axis") needs the part x_i >= 0 with the set on
+  /// x_i = 0 (it adds the mirror images), and its contact cells within the quadrature tolerance.
   void checkMesh(const mesh::Mesh& mesh, Formulation formulation) const;
 };
 

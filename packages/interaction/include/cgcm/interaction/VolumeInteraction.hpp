@@ -31,6 +31,17 @@
 // and the axisymmetric 2 pi R of the quadratic map); their bounding boxes
 // are grown to hold the curved cell (VolumeInteraction.cpp, cellBound).
 //
+// Symmetric models: a mesh that is the part x_i >= 0 of a model symmetric in
+// the planes x_i = 0 (VolumeInteractionOptions::symmetryPlanes) is
+// integrated over the whole model through image cells: a directed pair's
+// column cell may be the mirror image of a cell in any combination of the
+// planes (VolumePair::image), its points mirrored and its tangent columns
+// times the mirror's signs (d x_image / d x = M). Cells of the same body pair
+// only through images across planes that do not cut that body (its distinct
+// mirror image in the whole model). The forces on the mesh's nodes and the
+// tangent are then those of the whole model restricted to the part, and the
+// energy is the whole model's divided by the number of images.
+//
 // The kernel is a Kokkos functor over the directed pairs (no virtual calls,
 // no allocation); it hands each pair's element vector and matrix to a
 // scatter functor the caller supplies (assembly: atomic adds into Tpetra's
@@ -88,6 +99,12 @@ struct VolumeInteractionOptions {
   /// Verlet skin (absolute): the pair list covers cutoff + skin and is rebuilt
   /// when a node has moved by more than skin / 2. <= 0 selects r0.
   Real skin = 0.0;
+  /// Bit i: the mesh is the part x_i >= 0 of a model symmetric in the plane x_i = 0, whose other
+  /// part acts through image cells. 0: the mesh is the whole model.
+  int symmetryPlanes = 0;
+  /// Per body (empty: none): the symmetry planes that cut it, across which its image is the body
+  /// itself; across the others its image is another body of the whole model, which it interacts with.
+  std::vector<int> bodySymmetryPlanes;
 };
 
 /// One directed pair: the forces on rowCell's nodes from colCell (mesh-wide
@@ -96,6 +113,7 @@ struct VolumePair {
   LocalIndex rowCell = 0;
   LocalIndex colCell = 0;
   int order = 2;
+  int image = 0;  ///< bit i: the column cell mirrored in x_i = 0 (VolumeInteractionOptions::symmetryPlanes)
 };
 
 /// The contribution of a directed pair, ready to scatter: node-major dofs,
@@ -313,6 +331,12 @@ struct VolumePairFunctor {
     CellPoints<MaxNodes> a, b;
     cellPoints<Dim>(mesh, p.rowCell, p.order, x.data(), F == Formulation::Axisymmetric, a);
     cellPoints<Dim>(mesh, p.colCell, p.order, x.data(), F == Formulation::Axisymmetric, b);
+    Real sign[3] = {1.0, 1.0, 1.0};  // the image's mirror M = diag(sign)
+    for (int t = 0; t < Dim; ++t)
+      if (p.image & (1 << t)) {
+        sign[t] = -1.0;
+        for (int j = 0; j < b.count; ++j) b.x[j][t] = -b.x[j][t];
+      }
     VolumeContributionOf<MaxNodes> c;
     c.dim = Dim;
     c.rowBody = mesh.cellBody(p.rowCell);
@@ -359,7 +383,7 @@ struct VolumePairFunctor {
         }
         for (int n = 0; n < b.numNodes; ++n)
           for (int s = 0; s < Dim; ++s)
-            for (int t = 0; t < Dim; ++t) c.K[Dim * m + s][Dim * (a.numNodes + n) + t] += wm * C[n][s][t];
+            for (int t = 0; t < Dim; ++t) c.K[Dim * m + s][Dim * (a.numNodes + n) + t] += wm * C[n][s][t] * sign[t];
       }
     }
     c.energy = 0.5 * energy;
@@ -460,6 +484,7 @@ class VolumeInteraction final : public Interaction {
   /// `radius` (with each pair's box gap and size).
   struct Candidate {
     LocalIndex rowCell, colCell;
+    int image;    ///< the column cell's mirror (VolumePair::image)
     Real gap, size;  ///< box gap; the larger cell's size (volumeQuadratureError)
     bool tet;        ///< a tetrahedron in the pair
   };
