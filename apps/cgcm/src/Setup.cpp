@@ -177,7 +177,7 @@ solver::ProblemSetup buildProblem(const ParameterList& deck) {
                            "nodes (the interaction's resultant on it), not at its supports");
     }
   }
-  if (s.interaction) s.interaction->checkMesh(m, s.formulation);
+  if (s.interaction) s.interaction->checkMesh(m, s.formulation, {memory.megabytes, memory.describe()});
   s.numNodes = std::size_t(m.numNodes());
   s.numCells = std::size_t(m.numCells());
   return s;

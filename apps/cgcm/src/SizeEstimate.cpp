@@ -89,6 +89,12 @@ MemoryLimit memoryLimit(const Teuchos::ParameterList& output) {
   return {std::numeric_limits<double>::infinity(), false};
 }
 
+std::string MemoryLimit::describe() const {
+  return given ? "Output/Max Memory = " + app::megabytes(this->megabytes)
+               : "the " + app::megabytes(this->megabytes) +
+                     " this machine has available (Output/Max Memory sets the limit, in MB)";
+}
+
 void checkSize(const SizeEstimate& e, const MemoryLimit& limit, const std::string& what) {
   char counts[160];
   std::snprintf(counts, sizeof counts, "%.3g nodes, %.3g cells, %.3g unknowns", e.nodes, e.cells, e.dofs);
@@ -97,10 +103,7 @@ void checkSize(const SizeEstimate& e, const MemoryLimit& limit, const std::strin
     throw InputError(what + ": the mesh would have " + counts + ", beyond the 2^31 - 1 this code can index");
   if (e.megabytes > limit.megabytes)
     throw InputError(what + ": the mesh would have " + counts + " and need about " + megabytes(e.megabytes) +
-                     " of memory, more than " +
-                     (limit.given ? "Output/Max Memory = " + megabytes(limit.megabytes)
-                                  : "the " + megabytes(limit.megabytes) +
-                                        " this machine has available (Output/Max Memory sets the limit, in MB)"));
+                     " of memory, more than " + limit.describe());
 }
 
 }  // namespace cgcm::app

@@ -243,6 +243,40 @@ void VolumeInteraction::setLengthScale(Real b) {
 }
 
 std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Real* coords, Real radius) const {
+  std::vector<Candidate> out;
+  forEachCandidate(coords, radius, [&](const Candidate& c) { out.push_back(c); });
+  std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+    return a.rowCell != b.rowCell ? a.rowCell < b.rowCell
+                                  : a.colCell != b.colCell ? a.colCell < b.colCell : a.image < b.image;
+  });
+  return out;
+}
+
+VolumeInteraction::PairListSize VolumeInteraction::pairListSize(const Real* coords, double stopAboveMegabytes) const {
+  PairListSize size;
+  // the candidates (listed, then sorted), the kernel's list, and the graph's (row node, column node) couplings
+  const auto megabytes = [&] {
+    return (size.pairs * double(sizeof(Candidate) + 2 * sizeof(VolumePair)) +
+            size.couplings * double(sizeof(std::pair<LocalIndex, LocalIndex>))) / (1024.0 * 1024.0);
+  };
+  struct Stop {};
+  try {
+    forEachCandidate(coords, cutoff() + skin(), [&](const Candidate& c) {
+      size.pairs += 1.0;
+      size.couplings += double(mesh::nodesPerCell(CellType(view_.cellType(c.rowCell)))) *
+                        mesh::nodesPerCell(CellType(view_.cellType(c.colCell)));
+      // checked every 2^20 pairs: the count stops once past the limit
+      if (std::fmod(size.pairs, 1048576.0) == 0.0 && megabytes() > stopAboveMegabytes) throw Stop{};
+    });
+  } catch (const Stop&) {
+    size.stopped = true;
+  }
+  size.megabytes = megabytes();
+  return size;
+}
+
+void VolumeInteraction::forEachCandidate(const Real* coords, Real radius,
+                                         const std::function<void(const Candidate&)>& visit) const {
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, LocalIndex>;
   // per body: each cell's current bounding box (holding the curved cell), grown by radius / 2 on
   // every side; its size for the error estimate (volumeQuadratureError): the longest edge
@@ -266,7 +300,6 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
       }
       boxes[b].emplace_back(lo, hi, c);
     }
-  std::vector<Candidate> out;
   const int planes = options_.symmetryPlanes;
   for (int k = 0; k < numBodies_; ++k)
     for (int l = k; l < numBodies_; ++l)
@@ -296,10 +329,10 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
           const Real gap = std::sqrt(gap2), size = std::max(sizes[p.info()], sizes[q.info()]);
           const bool tet = cellTypeInfo(CellType(view_.cellType(p.info()))).simplex ||
                            cellTypeInfo(CellType(view_.cellType(q.info()))).simplex;
-          out.push_back({p.info(), q.info(), image, gap, size, tet});
+          visit({p.info(), q.info(), image, gap, size, tet});
           // the reverse direction (the mirror is its own inverse: the same gap); a body and its own
           // image: intersecting both ways round, reported both ways round
-          if (k != l) out.push_back({q.info(), p.info(), image, gap, size, tet});
+          if (k != l) visit({q.info(), p.info(), image, gap, size, tet});
         };
         // box_intersection_d reorders its inputs: work on copies (of body l: its image, new boxes)
         std::vector<Box> bk = boxes[k], bl;
@@ -315,11 +348,6 @@ std::vector<VolumeInteraction::Candidate> VolumeInteraction::candidates(const Re
         }
         CGAL::box_intersection_d(bk.begin(), bk.end(), bl.begin(), bl.end(), report);
       }
-  std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
-    return a.rowCell != b.rowCell ? a.rowCell < b.rowCell
-                                  : a.colCell != b.colCell ? a.colCell < b.colCell : a.image < b.image;
-  });
-  return out;
 }
 
 Real VolumeInteraction::cellSize(LocalIndex cell, const Real* coords) const {

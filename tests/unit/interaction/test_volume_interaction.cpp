@@ -777,6 +777,28 @@ void checkImagesActAsTheWholeModel(int dim) {
 TEST(VolumeInteraction, ImageCellsActAsTheWholeModelInPlaneStrain) { checkImagesActAsTheWholeModel(2); }
 TEST(VolumeInteraction, ImageCellsActAsTheWholeModelIn3D) { checkImagesActAsTheWholeModel(3); }
 
+// The pair list's size, counted without building it, is the list's (images included); the count
+// stops once past a memory limit.
+TEST(VolumeInteraction, PairListSizeIsCountedBeforeTheListIsBuilt) {
+  for (int dim : {2, 3}) {
+    const mesh::Mesh part = symmetricPart(dim);
+    VolumeInteractionOptions o;
+    o.formulation = dim == 3 ? Formulation::ThreeD : Formulation::PlaneStrain;
+    o.symmetryPlanes = dim == 3 ? 3 : 1;
+    o.bodySymmetryPlanes = {o.symmetryPlanes, o.symmetryPlanes, o.symmetryPlanes & ~1};
+    o.cutoff = 0.3;
+    VolumeInteraction vi(part, {1.0, 1.0, 1.0}, std::make_shared<LennardJones>(0.7, 0.1), o);
+    const auto size = vi.pairListSize(part.coords.data());
+    ASSERT_TRUE(vi.updatePairs(part.coords.data()));
+    EXPECT_EQ(size.pairs, double(vi.pairs().size()));
+    EXPECT_GT(size.pairs, 0.0);
+    EXPECT_FALSE(size.stopped);
+    const double perCell = dim == 3 ? 64.0 : 16.0;
+    EXPECT_EQ(size.couplings, perCell * size.pairs);
+    EXPECT_GT(size.megabytes, 0.0);
+  }
+}
+
 TEST(VolumeInteraction, SymmetricPartMustLieOnThePositiveSide) {
   mesh::Mesh part = symmetricPart(3);
   InteractionSetup setup;

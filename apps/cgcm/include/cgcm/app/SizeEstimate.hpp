@@ -34,6 +34,8 @@ std::optional<SizeEstimate> estimateBuiltInMesh(const Teuchos::ParameterList& de
 struct MemoryLimit {
   double megabytes;
   bool given;  ///< Output/Max Memory, not the machine's
+  /// "Output/Max Memory = 2000 MB" or "the 20000 MB this machine has available (...)", for messages.
+  std::string describe() const;
 };
 
 /// Output/Max Memory in MB, or (0, the default) the memory this machine has

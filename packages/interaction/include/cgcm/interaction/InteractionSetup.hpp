@@ -6,6 +6,7 @@
 // mesh, and the scalar parameters gammaW and gammaL that continuation moves.
 #include <Teuchos_ParameterList.hpp>
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,12 @@ struct ReferenceScales {
 
 enum class Method { HalfSpacePoint, VolumePair };
 
+/// Memory a run may take, and where that limit comes from (for messages).
+struct MemoryBudget {
+  double megabytes = std::numeric_limits<double>::infinity();
+  std::string source;
+};
+
 struct InteractionSetup {
   std::shared_ptr<const PairPotential> potential;
   Real density = 1.0;  ///< reference particle density beta0 of every body
@@ -56,8 +63,9 @@ struct InteractionSetup {
   std::vector<ScalarParameter> scalarParameters(std::shared_ptr<Interaction> interaction) const;
   /// Throws InputError if the method cannot integrate over `mesh`: Method 1 on a symmetric part
   /// (node sets "symmetry x|y|z", in plane strain "axis") needs the part x_i >= 0 with the set on
-  /// x_i = 0 (it adds the mirror images), and its contact cells within the quadrature tolerance.
-  void checkMesh(const mesh::Mesh& mesh, Formulation formulation) const;
+  /// x_i = 0 (it adds the mirror images), its pair list at the start within `memory`, and its
+  /// contact cells within the quadrature tolerance.
+  void checkMesh(const mesh::Mesh& mesh, Formulation formulation, const MemoryBudget& memory = {}) const;
 };
 
 /// The interaction a validated Interaction sublist describes. Throws

@@ -50,6 +50,8 @@
 
 #include <array>
 #include <chrono>
+#include <functional>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -452,6 +454,19 @@ class VolumeInteraction final : public Interaction {
   };
   ContactQuadrature contactQuadrature(const Real* coords, const std::vector<char>& surfaceCells = {}) const;
 
+  /// The size of the pair list at `coords` (cutoff + skin), counted without building it: directed
+  /// pairs, (row node, column node) couplings before merging, and the memory the list and the
+  /// graph's couplings take while built (every rank builds the whole list before keeping its rows).
+  /// The count stops (stopped: a lower bound) once the memory passes `stopAboveMegabytes`.
+  struct PairListSize {
+    double pairs = 0.0;
+    double couplings = 0.0;
+    double megabytes = 0.0;
+    bool stopped = false;
+  };
+  PairListSize pairListSize(const Real* coords,
+                            double stopAboveMegabytes = std::numeric_limits<double>::infinity()) const;
+
   /// Keeps only the directed pairs whose row cell has rowCells[cell] != 0 in
   /// the pair lists built from now on (a rank's own cells: it writes only
   /// their rows); empty (the default): every pair.
@@ -489,6 +504,7 @@ class VolumeInteraction final : public Interaction {
     bool tet;        ///< a tetrahedron in the pair
   };
   std::vector<Candidate> candidates(const Real* coords, Real radius) const;
+  void forEachCandidate(const Real* coords, Real radius, const std::function<void(const Candidate&)>& visit) const;
   /// The size of volumeQuadratureError: the longest corner-to-corner edge (tetrahedra: half of it).
   Real cellSize(LocalIndex cell, const Real* coords) const;
   template <Formulation F, int MaxNodes, class Scatter>
