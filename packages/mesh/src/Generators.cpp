@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -180,46 +181,65 @@ void append(Mesh& mesh, const Mesh& other, const std::string& prefix) {
 }
 
 void buildSurfaces(Mesh& mesh) {
+  // Every facet of every cell, keyed by its sorted nodes, sorted: a boundary facet is a key that
+  // occurs once. Facets keep the order of their first occurrence (deterministic output).
+  constexpr int kMaxFacetNodes = 9;
+  struct FacetUse {
+    std::array<LocalIndex, kMaxFacetNodes> key;  // sorted nodes, padded with -1
+    LocalIndex cell;                             // mesh-wide
+    std::uint8_t local;                          // the facet's index among its cell's
+    std::uint8_t block;
+  };
   mesh.surfaces.assign(mesh.numBodies, Surface{});
+  if (mesh.blocks.size() > 255) throw std::logic_error("buildSurfaces: more than 255 element blocks");
   for (int body = 0; body < mesh.numBodies; ++body) {
     Surface& s = mesh.surfaces[body];
     s.body = body;
     s.nodesPerFacet = 0;
-    struct FacetUse {
-      int count;
-      std::vector<LocalIndex> nodes;  // oriented
-      LocalIndex cell;
-    };
-    // sorted node key -> use; `order` keeps the output deterministic
-    std::map<std::vector<LocalIndex>, FacetUse> faces;
-    std::vector<std::vector<LocalIndex>> order;
+    std::vector<FacetUse> uses;
     for (std::size_t bi = 0; bi < mesh.blocks.size(); ++bi) {
       const auto& b = mesh.blocks[bi];
       if (b.body != body) continue;
       const int npc = nodesPerCell(b.type);
       const LocalIndex firstCell = mesh.firstCellOfBlock(bi);
+      const auto& local = localFacets(b.type);
+      uses.reserve(uses.size() + std::size_t(b.numCells()) * local.size());
       for (LocalIndex c = 0; c < b.numCells(); ++c) {
         const LocalIndex* cell = &b.connectivity[std::size_t(c) * npc];
-        for (const auto& lf : localFacets(b.type)) {
-          std::vector<LocalIndex> facet;
-          for (int a : lf) facet.push_back(cell[a]);
-          std::vector<LocalIndex> key(facet);
-          std::sort(key.begin(), key.end());
-          auto [it, inserted] = faces.try_emplace(key, FacetUse{0, facet, firstCell + c});
-          if (inserted) order.push_back(key);
-          ++it->second.count;
+        for (std::size_t f = 0; f < local.size(); ++f) {
+          FacetUse u;
+          u.key.fill(-1);
+          for (std::size_t a = 0; a < local[f].size(); ++a) u.key[a] = cell[local[f][a]];
+          std::sort(u.key.begin(), u.key.begin() + local[f].size());
+          u.cell = firstCell + c, u.local = std::uint8_t(f), u.block = std::uint8_t(bi);
+          uses.push_back(u);
         }
       }
     }
-    for (const auto& key : order) {
-      const FacetUse& use = faces[key];
-      if (use.count != 1) continue;
-      const auto& facet = use.nodes;
-      if (s.nodesPerFacet == 0) s.nodesPerFacet = int(facet.size());
-      if (int(facet.size()) != s.nodesPerFacet)
+    const auto before = [](const FacetUse& a, const FacetUse& b) {
+      return a.cell != b.cell ? a.cell < b.cell : a.local < b.local;
+    };
+    std::sort(uses.begin(), uses.end(), [&](const FacetUse& a, const FacetUse& b) {
+      return a.key != b.key ? a.key < b.key : before(a, b);
+    });
+    std::vector<FacetUse> once;
+    for (std::size_t i = 0; i < uses.size();) {
+      std::size_t j = i + 1;
+      while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+      if (j == i + 1) once.push_back(uses[i]);
+      i = j;
+    }
+    std::vector<FacetUse>().swap(uses);
+    std::sort(once.begin(), once.end(), before);
+    for (const FacetUse& u : once) {
+      const auto& b = mesh.blocks[u.block];
+      const auto& lf = localFacets(b.type)[u.local];
+      const LocalIndex* cell = &b.connectivity[std::size_t(u.cell - mesh.firstCellOfBlock(u.block)) * nodesPerCell(b.type)];
+      if (s.nodesPerFacet == 0) s.nodesPerFacet = int(lf.size());
+      if (int(lf.size()) != s.nodesPerFacet)
         throw InputError("body " + std::to_string(body) + " mixes boundary facets of different kinds");
-      s.facets.insert(s.facets.end(), facet.begin(), facet.end());
-      s.facetCells.push_back(use.cell);
+      for (int a : lf) s.facets.push_back(cell[a]);
+      s.facetCells.push_back(u.cell);
     }
     if (s.nodesPerFacet == 0) s.nodesPerFacet = mesh.dim == 2 ? 2 : 3;
   }

@@ -165,25 +165,46 @@ std::string findBodyOverlap(const Mesh& mesh) {
   for (const auto& b : mesh.blocks) {
     if (names[b.body].empty()) names[b.body] = b.name;
     const int npc = nodesPerCell(b.type);
+    for (LocalIndex c = 0; c < b.numCells(); ++c)
+      for (int a = 0; a < npc; ++a) {
+        const LocalIndex n = b.connectivity[std::size_t(c) * npc + a];
+        nodeBody[n] = b.body;
+        bodyBox[b.body].add(point(n));
+      }
+  }
+  // Only what lies in the box of another body can overlap it: most meshes (bodies apart, in
+  // boxes that do not meet) are done here, the rest test that zone alone.
+  auto inOtherBody = [&](const Box& box, int body) {
+    for (int other = 0; other < mesh.numBodies; ++other)
+      if (other != body && box.overlaps(bodyBox[other])) return true;
+    return false;
+  };
+  bool anyZone = false;
+  for (int k = 0; k < mesh.numBodies && !anyZone; ++k) anyZone = inOtherBody(bodyBox[k], k);
+  if (!anyZone) return "";
+  for (const auto& b : mesh.blocks) {
+    const int npc = nodesPerCell(b.type);
     for (LocalIndex c = 0; c < b.numCells(); ++c) {
-      const LocalIndex* nodes = &b.connectivity[std::size_t(c) * npc];
-      cells.push_back(shape(b.body, nodes, npc));
-      cells.back().facets = &localFacets(b.type);
-      cells.back().facetCorners = facetCornerCount(cellTypeInfo(b.type));
-      for (int a = 0; a < npc; ++a) nodeBody[nodes[a]] = b.body;
-      bodyBox[b.body].add(cells.back().box.lo), bodyBox[b.body].add(cells.back().box.hi);
+      Shape cell = shape(b.body, &b.connectivity[std::size_t(c) * npc], npc);
+      if (!inOtherBody(cell.box, b.body)) continue;
+      cell.facets = &localFacets(b.type);
+      cell.facetCorners = facetCornerCount(cellTypeInfo(b.type));
+      cells.push_back(std::move(cell));
     }
   }
   Mesh boundary = mesh;  // every exterior facet, not only the interacting ones
   buildSurfaces(boundary);
   for (const auto& s : boundary.surfaces)
     for (LocalIndex f = 0; f < s.numFacets(); ++f) {
-      facets.push_back(shape(s.body, &s.facets[std::size_t(f) * s.nodesPerFacet], s.nodesPerFacet));
-      facets.back().corners = facetCornerCount(rowWithFacets(dim, s.nodesPerFacet));
+      Shape facet = shape(s.body, &s.facets[std::size_t(f) * s.nodesPerFacet], s.nodesPerFacet);
+      if (!inOtherBody(facet.box, s.body)) continue;
+      facet.corners = facetCornerCount(rowWithFacets(dim, s.nodesPerFacet));
+      facets.push_back(std::move(facet));
     }
 
-  Box all;
-  for (const auto& b : bodyBox) all.add(b.lo), all.add(b.hi);
+  Box all;  // the zone where bodies' boxes meet
+  for (const auto* shapes : {&cells, &facets})
+    for (const Shape& sh : *shapes) all.add(sh.box.lo), all.add(sh.box.hi);
   Buckets cellGrid(all, cells.size(), dim), facetGrid(all, facets.size(), dim);
   for (std::size_t k = 0; k < cells.size(); ++k) cellGrid.insert(k, cells[k].box);
   for (std::size_t k = 0; k < facets.size(); ++k) facetGrid.insert(k, facets[k].box);
@@ -194,6 +215,7 @@ std::string findBodyOverlap(const Mesh& mesh) {
     if (nodeBody[n] < 0) continue;
     Box box;
     box.add(point(n));
+    if (!inOtherBody(box, nodeBody[n])) continue;
     std::string found;
     cellGrid.any(box, [&](std::size_t k) {
       const Shape& c = cells[k];
