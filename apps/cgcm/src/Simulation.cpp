@@ -97,10 +97,12 @@ void measureCost(RunResult& result, const solver::Discretization& disc, const so
     const double mine = double(usage.ru_maxrss) / 1024.0;
     result.peakMemoryMB.assign(comm.getSize(), 0.0);
     Teuchos::gatherAll(comm, 1, &mine, comm.getSize(), result.peakMemoryMB.data());
-    const long held[2] = {long(disc.mesh->numCells()), long(disc.mesh->numNodes())};
-    std::vector<long> all(2 * std::size_t(comm.getSize()));
-    Teuchos::gatherAll(comm, 2, held, int(all.size()), all.data());
-    for (int r = 0; r < comm.getSize(); ++r) result.meshHeld.push_back({all[2 * r], all[2 * r + 1]});
+    long facets = 0;  // the interacting surfaces a rank holds (its own facets' search runs against them)
+    for (const auto& s : disc.mesh->surfaces) facets += long(s.numFacets());
+    const long held[3] = {long(disc.mesh->numCells()), long(disc.mesh->numNodes()), facets};
+    std::vector<long> all(3 * std::size_t(comm.getSize()));
+    Teuchos::gatherAll(comm, 3, held, int(all.size()), all.data());
+    for (int r = 0; r < comm.getSize(); ++r) result.meshHeld.push_back({all[3 * r], all[3 * r + 1], all[3 * r + 2]});
   }
   const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);
@@ -309,6 +311,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   result.curve = recorder.curve;
   result.meshSeconds = meshSeconds, result.distributionSeconds = distributionSeconds;
   result.meshSource = setup.model.meshSource;
+  if (setup.model.mesh)
+    for (const auto& s : setup.model.mesh->surfaces) result.numSurfaceFacets += std::size_t(s.numFacets());
   result.linearSolver = solver::resolvedLinearSolverType(linearSolverSettings, dim);
   measureCost(result, disc, newton, timingsBefore);
   if (root) writeSummary(dir + "/summary.txt", result, plan, printSteps ? &log : nullptr);

@@ -90,12 +90,13 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
     both((line + "\n").c_str());
   }
   if (result.meshHeld.size() > 1) {
-    std::string line = "mesh assembled per rank (cells, nodes):";
+    std::string line = "mesh held per rank (cells, nodes, surface facets):";
     for (std::size_t r = 0; r < result.meshHeld.size(); ++r) {
-      std::snprintf(buf, sizeof buf, "%s %ld, %ld", r == 0 ? "" : ";", result.meshHeld[r][0], result.meshHeld[r][1]);
+      std::snprintf(buf, sizeof buf, "%s %ld, %ld, %ld", r == 0 ? "" : ";", result.meshHeld[r][0],
+                    result.meshHeld[r][1], result.meshHeld[r][2]);
       line += buf;
     }
-    std::snprintf(buf, sizeof buf, " of %zu, %zu%s", result.numCells, result.numNodes,
+    std::snprintf(buf, sizeof buf, " of %zu, %zu, %zu%s", result.numCells, result.numNodes, result.numSurfaceFacets,
                   result.volumePairs.empty() ? "" : " (Method 1 reads the whole mesh)");
     both((line + buf + "\n").c_str());
   }

@@ -36,9 +36,10 @@ struct RunResult {
   std::string linearSolver;         ///< Solver/Linear Solver/Type, "auto" resolved
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
   std::vector<double> peakMemoryMB;                 ///< per rank: the process's peak resident memory
-  std::vector<std::array<long, 2>> meshHeld;        ///< per rank: cells and nodes of the mesh it assembles
+  std::vector<std::array<long, 3>> meshHeld;        ///< per rank: cells, nodes and surface facets of the mesh it holds
   std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
   std::size_t numNodes = 0, numCells = 0, numDofs = 0;  ///< the problem's size
+  std::size_t numSurfaceFacets = 0;                     ///< of the interacting surfaces, whole model (rank 0)
 };
 
 enum class RunMode {
