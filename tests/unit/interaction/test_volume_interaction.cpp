@@ -294,6 +294,29 @@ Assembled assemble(VolumeInteraction& vi, const std::vector<Real>& x, bool tange
   return out;
 }
 
+// Forces = gradient of the energy; tangent = derivative of the forces (central differences), at x
+// where `a` was assembled with its tangent.
+void expectGradientAndTangent(VolumeInteraction& vi, const std::vector<Real>& x, const Assembled& a) {
+  const Real h = 1e-6;
+  Real fmax = 0.0;
+  for (Real v : a.f) fmax = std::max(fmax, std::abs(v));
+  Real kmax = 0.0;
+  for (const auto& [ij, v] : a.K) kmax = std::max(kmax, std::abs(v));
+  for (std::size_t dof = 0; dof < x.size(); ++dof) {
+    std::vector<Real> xp = x, xm = x;
+    xp[dof] += h;
+    xm[dof] -= h;
+    const Real ep = vi.energy(xp.data()), em = vi.energy(xm.data());
+    EXPECT_NEAR(a.f[dof], (ep - em) / (2 * h), 1e-6 * fmax) << "dof " << dof;
+    const Assembled ap = assemble(vi, xp, false), am = assemble(vi, xm, false);
+    for (std::size_t row = 0; row < x.size(); ++row) {
+      const auto it = a.K.find({int(row), int(dof)});
+      const Real exact = it == a.K.end() ? 0.0 : it->second;
+      EXPECT_NEAR(exact, (ap.f[row] - am.f[row]) / (2 * h), 1e-6 * kmax) << "row " << row << " col " << dof;
+    }
+  }
+}
+
 void checkKernelOn(const TwoBodies& t, Real r0, const std::string& potential) {
   const Formulation f = t.formulation;
   VolumeInteractionOptions o;
@@ -313,25 +336,7 @@ void checkKernelOn(const TwoBodies& t, Real r0, const std::string& potential) {
     EXPECT_NEAR(resultant[0][i] + resultant[1][i], 0.0, 1e-13 * scale) << "component " << i;
   }
   EXPECT_GT(std::abs(resultant[0][1]), 0.0);
-  // forces = gradient of the energy; tangent = derivative of the forces (central differences)
-  const Real h = 1e-6;
-  Real fmax = 0.0;
-  for (Real v : a.f) fmax = std::max(fmax, std::abs(v));
-  Real kmax = 0.0;
-  for (const auto& [ij, v] : a.K) kmax = std::max(kmax, std::abs(v));
-  for (std::size_t dof = 0; dof < x.size(); ++dof) {
-    std::vector<Real> xp = x, xm = x;
-    xp[dof] += h;
-    xm[dof] -= h;
-    const Real ep = vi.energy(xp.data()), em = vi.energy(xm.data());
-    EXPECT_NEAR(a.f[dof], (ep - em) / (2 * h), 1e-6 * fmax) << "dof " << dof;
-    const Assembled ap = assemble(vi, xp, false), am = assemble(vi, xm, false);
-    for (std::size_t row = 0; row < x.size(); ++row) {
-      const auto it = a.K.find({int(row), int(dof)});
-      const Real exact = it == a.K.end() ? 0.0 : it->second;
-      EXPECT_NEAR(exact, (ap.f[row] - am.f[row]) / (2 * h), 1e-6 * kmax) << "row " << row << " col " << dof;
-    }
-  }
+  expectGradientAndTangent(vi, x, a);
 }
 
 void checkKernel(Formulation f, CellType type, Real r0, const std::string& potential = "lennard-jones") {
@@ -756,22 +761,7 @@ void checkImagesActAsTheWholeModel(int dim) {
     }
   }
 
-  const std::vector<Real>& x = part.coords;
-  const Real h = 1e-6;
-  Real kmax = 0.0;
-  for (const auto& [ij, v] : a.K) kmax = std::max(kmax, std::abs(v));
-  for (std::size_t dof = 0; dof < x.size(); ++dof) {
-    std::vector<Real> xp = x, xm = x;
-    xp[dof] += h;
-    xm[dof] -= h;
-    EXPECT_NEAR(a.f[dof], (mine.energy(xp.data()) - mine.energy(xm.data())) / (2 * h), 1e-6 * fmax) << "dof " << dof;
-    const Assembled ap = assemble(mine, xp, false), am = assemble(mine, xm, false);
-    for (std::size_t row = 0; row < x.size(); ++row) {
-      const auto it = a.K.find({int(row), int(dof)});
-      const Real exact = it == a.K.end() ? 0.0 : it->second;
-      EXPECT_NEAR(exact, (ap.f[row] - am.f[row]) / (2 * h), 1e-6 * kmax) << "row " << row << " col " << dof;
-    }
-  }
+  expectGradientAndTangent(mine, part.coords, a);
 }
 
 TEST(VolumeInteraction, ImageCellsActAsTheWholeModelInPlaneStrain) { checkImagesActAsTheWholeModel(2); }
