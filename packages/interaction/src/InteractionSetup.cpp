@@ -279,29 +279,25 @@ void InteractionSetup::checkMesh(const mesh::Mesh& mesh, Formulation formulation
   VolumeInteractionOptions options = volumeOptions;
   options.formulation = formulation;
   setSymmetryPlanes(mesh, formulation, options);
+  const VolumeInteraction volume(mesh, std::vector<Real>(std::size_t(mesh.numBodies), density), potential,
+                                 options);
   // Every pair of cells within the cutoff is listed (each rank builds the whole list before
   // keeping its rows): the list grows like (cutoff / cell size)^dim per cell near the other body.
-  {
-    const VolumeInteraction volume(mesh, std::vector<Real>(std::size_t(mesh.numBodies), density), potential,
-                                   options);
-    const auto size = volume.pairListSize(mesh.coords.data(), memory.megabytes);
-    if (size.megabytes > memory.megabytes) {
-      std::ostringstream o;
-      o.precision(3);
-      o << "Interaction/Method = \"volume pair\": at the start " << (size.stopped ? "more than " : "") << size.pairs
-        << " directed cell pairs lie within Interaction/Cutoff + Pair List Skin (" << volume.cutoff() + volume.skin()
-        << "), and their list and matrix couplings need " << (size.stopped ? "more than " : "about ")
-        << size.megabytes << " MB, more than "
-        << memory.source << ": coarser cells near the contact, a smaller Interaction/Cutoff, or \"half-space point\"";
-      throw InputError(o.str());
-    }
+  const auto size = volume.pairListSize(mesh.coords.data(), memory.megabytes);
+  if (size.megabytes > memory.megabytes) {
+    std::ostringstream o;
+    o.precision(3);
+    o << "Interaction/Method = \"volume pair\": at the start " << (size.stopped ? "more than " : "") << size.pairs
+      << " directed cell pairs lie within Interaction/Cutoff + Pair List Skin (" << volume.cutoff() + volume.skin()
+      << "), and their list and matrix couplings need " << (size.stopped ? "more than " : "about ") << size.megabytes
+      << " MB, more than " << memory.source
+      << ": coarser cells near the contact, a smaller Interaction/Cutoff, or \"half-space point\"";
+    throw InputError(o.str());
   }
   // The cells that meet first must be integrated to the tolerance when they are in contact
   // (at kContactGapFloor r0): the rule's error grows with cell size over gap, and beyond about
   // 4 no order up to the kernel's most brings it down (doc/theory.md#method-1).
   if (volumeOptions.quadratureTolerance <= 0.0) return;
-  const VolumeInteraction volume(mesh, std::vector<Real>(std::size_t(mesh.numBodies), density), potential,
-                                 options);
   std::vector<char> surfaceCells(std::size_t(mesh.numCells()), 0);
   for (const auto& surface : mesh.surfaces)
     for (LocalIndex cell : surface.facetCells)
