@@ -4,6 +4,8 @@
 // it checks that the single rank keeps the mesh.
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include <Tpetra_Core.hpp>
 
 #include "cgcm/app/Setup.hpp"
@@ -19,6 +21,14 @@ Teuchos::RCP<Teuchos::ParameterList> deckFrom(const std::string& file, const std
   io::applyOverrides(*d, *app::validParameters(), overrides);
   io::validateDeck(*d, *app::validParameters());
   return d;
+}
+
+// The report with its wall-clock times ("meshed by gmsh in 0.1 s") blanked: two builds of one deck
+// say the same, but not in the same time.
+std::vector<std::string> withoutTimes(std::vector<std::string> report) {
+  static const std::regex time(" in [0-9.]+ s");
+  for (auto& line : report) line = std::regex_replace(line, time, " in ... s");
+  return report;
 }
 
 void expectSame(const mesh::DisplacementCondition& a, const mesh::DisplacementCondition& b) {
@@ -87,7 +97,7 @@ void expectSameSetUp(const solver::ProblemSetup& sent, const solver::ProblemSetu
     EXPECT_EQ(sent.model.contact->lowerBody, c->lowerBody);
     EXPECT_EQ(sent.model.contact->contactDistance, c->contactDistance);
   }
-  EXPECT_EQ(sent.report, own.report);
+  EXPECT_EQ(withoutTimes(sent.report), withoutTimes(own.report));
   EXPECT_EQ(sent.partition, own.partition);
   EXPECT_EQ(sent.forceScale, own.forceScale);
   EXPECT_EQ(sent.numNodes, std::size_t(own.model.mesh->numNodes()));
