@@ -18,7 +18,7 @@
 
 #include "cgcm/assembly/Problem.hpp"
 #include "cgcm/assembly/Dirichlet.hpp"
-#include "cgcm/core/HugePages.hpp"
+#include "cgcm/core/MallocTunables.hpp"
 #include "cgcm/mesh/Generators.hpp"
 #include "cgcm/solver/LinearSolver.hpp"
 #include "BenchSupport.hpp"
@@ -28,7 +28,7 @@ using bench::Clock;
 using bench::secondsSince;
 
 int main(int argc, char** argv) {
-  cgcm::core::useHugePageMalloc(argv);
+  cgcm::core::tuneMalloc(argv);
   Tpetra::ScopeGuard scope(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;

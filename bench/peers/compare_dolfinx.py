@@ -21,10 +21,11 @@ alone. Both solve with CG: cgcm with Belos CG + MueLu, the Dirichlet rows
 eliminated symmetrically (three translations as near-null space), dolfinx
 with CG + GAMG and the six rigid-body modes (symmetric elimination too).
 
-Both codes run with the same memory pages: by default glibc's malloc in
-transparent huge pages (the tunable glibc.malloc.hugetlb=1, which cgcm sets
-for itself and the script sets for dolfinx too), with --pages small in 4 KiB
-pages (CGCM_HUGE_PAGES=0, no tunable).
+Both codes run with the same malloc: by default glibc's in transparent huge
+pages (the tunable glibc.malloc.hugetlb=1), with --pages small in 4 KiB pages
+(CGCM_HUGE_PAGES=0, no tunable); in both, blocks from 4 MiB mapped
+(glibc.malloc.mmap_threshold, which cgcm sets for itself and the script sets
+for dolfinx too).
 """
 import argparse
 import json
@@ -73,7 +74,9 @@ def main():
     if args.repeats < 1 or args.rtol <= 0 or min(args.sizes) < 1 or min(args.ranks) < 1:
         parser.error("--repeats, --sizes and --ranks must be at least 1, --rtol positive")
 
-    tunables = [t for t in os.environ.get("GLIBC_TUNABLES", "").split(":") if t and "malloc.hugetlb" not in t]
+    tunables = [t for t in os.environ.get("GLIBC_TUNABLES", "").split(":")
+                if t and "malloc.hugetlb" not in t and "malloc.mmap_threshold" not in t]
+    tunables.append(f"glibc.malloc.mmap_threshold={4 << 20}")  # cgcm's (core/MallocTunables.hpp)
     if args.pages == "huge":
         tunables.append("glibc.malloc.hugetlb=1")
     env = {"GLIBC_TUNABLES": ":".join(tunables), "CGCM_HUGE_PAGES": "1" if args.pages == "huge" else "0"}

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "cgcm/core/HugePages.hpp"
+#include "cgcm/core/MallocTunables.hpp"
 #include "cgcm/solver/PathAnalysis.hpp"
 
 namespace cgcm::app {
@@ -86,7 +86,7 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
       std::snprintf(buf, sizeof buf, "%s %.0f MB", r == 0 ? "" : ",", result.peakMemoryMB[r]);
       line += buf;
     }
-    line += core::hugePageMalloc() ? " (malloc in transparent huge pages)" : " (malloc in 4 KiB pages)";
+    line += " (malloc in " + core::mallocDescription() + ")";
     both((line + "\n").c_str());
   }
   if (result.meshHeld.size() > 1) {

@@ -16,7 +16,7 @@
 #include "cgcm/app/SizeEstimate.hpp"
 #include "cgcm/app/Simulation.hpp"
 #include "cgcm/core/Error.hpp"
-#include "cgcm/core/HugePages.hpp"
+#include "cgcm/core/MallocTunables.hpp"
 #include "cgcm/io/Deck.hpp"
 
 namespace {
@@ -79,7 +79,7 @@ Outcome runDeck(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const std::v
 }  // namespace
 
 int main(int argc, char** argv) {
-  cgcm::core::useHugePageMalloc(argv);
+  cgcm::core::tuneMalloc(argv);
   // Before Kokkos starts: it answers --help with its own option block.
   if (argc == 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))) {
     usage(std::cout);
