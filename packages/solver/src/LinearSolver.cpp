@@ -14,6 +14,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/core/ParameterValidators.hpp"
 #include "MumpsSolver.hpp"
+#include "PreconditionerReuse.hpp"
 #include "SymmetricElimination.hpp"
 
 namespace cgcm::solver {
@@ -72,6 +73,16 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   valid->set("Max Iterations", 1000, "iteration limit of iterative solvers", intAtLeast(1));
   valid->set("Krylov Space", 200, "GMRES restart length", intAtLeast(1));
   valid->set("ILU Fill Level", 2, "level of fill of the Ifpack2 RILUK preconditioner", intAtLeast(0));
+  valid->set("Preconditioner Reuse", 0,
+             "Belos types: how many later Jacobians (of the same matrix graph) a preconditioner serves before it is "
+             "built again; 0 builds one for every Jacobian. A kept one is built again sooner when a solve with it "
+             "fails (the solve is then repeated) or needs more than Preconditioner Growth Limit times the Krylov "
+             "iterations of the first solve with it. Every solve still meets Tolerance with the current Jacobian",
+             intAtLeast(0));
+  valid->set("Preconditioner Growth Limit", 1.5,
+             "with Preconditioner Reuse: the Krylov iterations of a solve with a kept preconditioner, relative to "
+             "its first solve, above which it is built again for the next Jacobian (at least 1)",
+             atLeast(1.0));
   // Constant by default. Eisenstat-Walker on the 3D sphere deck at 27k unknowns (GMRES + MueLu, 14 states):
   // 577 Krylov iterations against 1440 and 14.5 s of linear solves against 19.2 s, but 39 Newton iterations
   // against 33, so that the path took 40.0 s against 38.0 s. Its Newton iteration counts also depend on the
@@ -100,6 +111,10 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
     const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
     const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace, bool symmetric) {
   const std::string type = resolvedLinearSolverType(settings, dofsPerNode);
+  if (const int reuse = settings.get<int>("Preconditioner Reuse"); reuse > 0 && type.rfind("Belos ", 0) != 0)
+    throw InputError("Solver/Linear Solver/Preconditioner Reuse = " + std::to_string(reuse) +
+                     " applies to the Belos types, and this run's linear solver is " + type +
+                     "; use Preconditioner Reuse = 0 or a Belos type");
   if (type == "Stratimikos") return Teuchos::rcp(new Teuchos::ParameterList(settings.sublist("Stratimikos")));
   if (type == "Belos CG + MueLu" && !symmetric)
     throw InputError(
@@ -205,8 +220,12 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
     throw InputError(std::string("Solver/Linear Solver: Stratimikos rejected the parameters: ") + e.what());
   }
   auto strategy = builder.createLinearSolveStrategy("");
-  if (resolvedLinearSolverType(settings, dofsPerNode) == "Belos CG + MueLu")
-    return Teuchos::rcp(new SymmetricEliminationFactory(strategy));
+  const std::string type = resolvedLinearSolverType(settings, dofsPerNode);
+  const int reuse = settings.get<int>("Preconditioner Reuse");
+  if (reuse > 0 && type.rfind("Belos ", 0) == 0)
+    strategy = Teuchos::rcp(
+        new PreconditionerReuseFactory(strategy, reuse, settings.get<double>("Preconditioner Growth Limit")));
+  if (type == "Belos CG + MueLu") return Teuchos::rcp(new SymmetricEliminationFactory(strategy));
   return strategy;
 }
 

@@ -693,6 +693,129 @@ TEST(LinearSolver, ConjugateGradientsSolveSystemsWithUnitRowsExactly) {
   }
 }
 
+// A tridiagonal stencil on `map`: `diagonal` on the diagonal, -1 beside it (a 1D Laplacian shifted by
+// diagonal - 2). Given A, its values are replaced on its own graph.
+RCP<assembly::CrsMatrix> tridiagonal(const RCP<const assembly::Map>& map, double diagonal,
+                                     RCP<assembly::CrsMatrix> A = Teuchos::null) {
+  const bool fill = A.is_null();
+  if (fill) A = Teuchos::rcp(new assembly::CrsMatrix(map, 3));
+  else A->resumeFill();
+  const GlobalIndex n = GlobalIndex(map->getGlobalNumElements());
+  for (std::size_t k = 0; k < map->getNodeNumElements(); ++k) {
+    const GlobalIndex i = map->getGlobalElement(LocalIndex(k));
+    std::vector<GlobalIndex> cols{i};
+    std::vector<double> vals{diagonal};
+    for (const GlobalIndex j : {i - 1, i + 1})
+      if (j >= 0 && j < n) cols.push_back(j), vals.push_back(-1.0);
+    if (fill) A->insertGlobalValues(i, Teuchos::ArrayView<const GlobalIndex>(cols), Teuchos::ArrayView<const double>(vals));
+    else A->replaceGlobalValues(i, Teuchos::ArrayView<const GlobalIndex>(cols), Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  return A;
+}
+
+struct KrylovSolve {
+  Thyra::ESolveStatus status;
+  int iterations;           ///< Belos' count
+  double relativeResidual;  ///< |b - A x| / |b| with A as it is now
+};
+
+// Initialises `lows` with A (through `factory`) and solves A x = 1 from x = 0 to 1e-10.
+KrylovSolve initializeAndSolve(const Thyra::LinearOpWithSolveFactoryBase<double>& factory,
+                               Thyra::LinearOpWithSolveBase<double>& lows, const RCP<assembly::CrsMatrix>& A) {
+  const auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const assembly::Operator>(A));
+  Thyra::initializeOp(factory, op, Teuchos::ptrFromRef(lows));
+  assembly::Vector b(A->getRowMap()), x(A->getRowMap()), r(A->getRowMap());
+  b.putScalar(1.0);
+  const auto bT = Thyra::createConstMultiVector(Teuchos::rcp_implicit_cast<const assembly::MultiVector>(Teuchos::rcpFromRef(b)));
+  const auto xT = Thyra::createMultiVector(Teuchos::rcp_implicit_cast<assembly::MultiVector>(Teuchos::rcpFromRef(x)));
+  const Thyra::SolveCriteria<double> criteria(
+      Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS), 1e-10);
+  const auto status = lows.solve(Thyra::NOTRANS, *bT, xT.ptr(), Teuchos::ptrFromRef(criteria));
+  A->apply(x, r);
+  r.update(1.0, b, -1.0);
+  const auto& extra = status.extraParameters;
+  return {status.solveStatus, extra.is_null() ? -1 : extra->get<int>("Belos/Iteration Count"), r.norm2() / b.norm2()};
+}
+
+// With Preconditioner Reuse the preconditioner of one Jacobian serves the next ones, and
+// every solve still meets its tolerance with the current matrix. On shifted 1D Laplacians (diagonals E =
+// 2.5, N = 4 and H = 2.01: MueLu's preconditioner of E serves N in 17 Krylov iterations against 13 fresh,
+// N's serves H in 72 against 15): E's is kept for N while within the growth limit (1.5) until its age is up
+// (3 later Jacobians); N's kept for H exceeds the limit, so the next Jacobian gets a fresh one; a
+// preconditioner serves another matrix (graph) and another solve object of the same factory too (the
+// interaction's graph changes from step to step); a kept one under which the solve fails (Max Iterations)
+// is built anew and the solve repeated
+// from where it stopped, its count the sum of both. Counts of a fresh preconditioner are compared with a
+// solver without reuse to within 2 (MueLu's Chebyshev estimates its eigenvalue bound from a random vector),
+// counts of the same preconditioner on the same matrix exactly.
+TEST(LinearSolver, AKeptPreconditionerServesLaterJacobiansUntilItNoLongerPays) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = Teuchos::rcp(new assembly::Map(Tpetra::global_size_t(20000), 0, comm));
+  auto factoryWith = [&](int reuse, int maxIterations) {
+    ParameterList settings("Linear Solver");
+    settings.set("Type", "Belos GMRES + MueLu");
+    settings.set("Preconditioner Reuse", reuse);
+    settings.set("Max Iterations", maxIterations);
+    settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
+    return solver::buildLinearSolver(settings, comm->getSize(), 1, Teuchos::null, false);
+  };
+  const double E = 2.5, N = 4.0, H = 2.01;
+  const auto fresh = factoryWith(0, 1000);
+  const auto freshLows = fresh->createOp();
+  const int freshE = initializeAndSolve(*fresh, *freshLows, tridiagonal(map, E)).iterations;
+  const int freshN = initializeAndSolve(*fresh, *freshLows, tridiagonal(map, N)).iterations;
+  const int freshH = initializeAndSolve(*fresh, *freshLows, tridiagonal(map, H)).iterations;
+
+  const auto reusing = factoryWith(3, 1000);
+  const auto lows = reusing->createOp();
+  auto A = tridiagonal(map, E);
+  EXPECT_NEAR(initializeAndSolve(*reusing, *lows, A).iterations, freshE, 2) << "the first Jacobian builds one";
+  int keptOnN = 0;
+  for (int later = 1; later <= 3; ++later) {
+    SCOPED_TRACE("later Jacobian " + std::to_string(later));
+    A = tridiagonal(map, N, A);
+    const KrylovSolve s = initializeAndSolve(*reusing, *lows, A);
+    EXPECT_EQ(s.status, Thyra::SOLVE_STATUS_CONVERGED);
+    EXPECT_LE(s.relativeResidual, 1e-10) << "the solve is with the current matrix";
+    if (later == 1) keptOnN = s.iterations;
+    EXPECT_EQ(s.iterations, keptOnN);
+  }
+  EXPECT_GT(keptOnN, freshN) << "E's preconditioner serves N, less well than N's own";
+  EXPECT_LE(keptOnN, 1.5 * freshE) << "within the growth limit";
+  A = tridiagonal(map, N, A);  // its age is up
+  EXPECT_NEAR(initializeAndSolve(*reusing, *lows, A).iterations, freshN, 2);
+  A = tridiagonal(map, H, A);  // N's kept for H: past the growth limit
+  KrylovSolve s = initializeAndSolve(*reusing, *lows, A);
+  EXPECT_LE(s.relativeResidual, 1e-10);
+  const int keptOnH = s.iterations;
+  EXPECT_GT(keptOnH, 1.5 * freshN);
+  A = tridiagonal(map, H, A);  // so built anew
+  EXPECT_NEAR(initializeAndSolve(*reusing, *lows, A).iterations, freshH, 2);
+  // a new matrix (another graph) and another solve object of the same factory: H's is kept, and built on
+  // the matrix it came from, it serves N in more iterations than N's own would need
+  A = tridiagonal(map, N);
+  const auto otherLows = reusing->createOp();
+  s = initializeAndSolve(*reusing, *otherLows, A);
+  EXPECT_LE(s.relativeResidual, 1e-10);
+  EXPECT_GT(s.iterations, 1.5 * freshH);
+  A = tridiagonal(map, N, A);  // past the growth limit: built anew
+  EXPECT_NEAR(initializeAndSolve(*reusing, *otherLows, A).iterations, freshN, 2);
+
+  // A limit on the Krylov iterations that only a fresh preconditioner meets
+  ASSERT_GT(keptOnH, freshH + 4);
+  const auto strict = factoryWith(3, freshH + 4);
+  const auto strictLows = strict->createOp();
+  A = tridiagonal(map, N);
+  initializeAndSolve(*strict, *strictLows, A);
+  A = tridiagonal(map, H, A);
+  s = initializeAndSolve(*strict, *strictLows, A);
+  EXPECT_EQ(s.status, Thyra::SOLVE_STATUS_CONVERGED);
+  EXPECT_LE(s.relativeResidual, 1e-10);
+  EXPECT_GT(s.iterations, freshH + 4) << "the failed attempt's iterations and the fresh solve's";
+  EXPECT_LE(s.iterations, freshH + 4 + freshH + 2);
+}
+
 TEST(LinearSolver, ConjugateGradientsAreRefusedForAnUnsymmetricTangent) {
   ParameterList settings("Linear Solver");
   settings.set("Type", "Belos CG + MueLu");
