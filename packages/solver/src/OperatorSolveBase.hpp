@@ -1,6 +1,6 @@
 #pragma once
-// What cgcm's solve strategies (MumpsSolver.hpp, SymmetricElimination.hpp)
-// share: the object that solves with one forward operator takes its source,
+// What cgcm's solve strategies (MumpsSolver.hpp, SymmetricElimination.hpp,
+// PreconditionerReuse.hpp) share: the object that solves with one forward operator takes its source,
 // spaces and apply from that operator and solves without transposition; the
 // strategy builds its own preconditioning (none is accepted from outside).
 #include <Thyra_LinearOpSourceBase.hpp>
@@ -54,6 +54,26 @@ class OperatorSolveFactoryBase : public Thyra::LinearOpWithSolveFactoryBase<Real
                                   const Thyra::ESupportSolveUse supportSolveUse) const override {
     initializeOp(fwdOpSrc, Op, supportSolveUse);
   }
+};
+
+/// A strategy that wraps another one (`inner_`), whose parameters are its own.
+class DecoratingSolveFactory : public OperatorSolveFactoryBase {
+ public:
+  explicit DecoratingSolveFactory(Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner)
+      : inner_(std::move(inner)) {}
+
+  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& p) override { inner_->setParameterList(p); }
+  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override {
+    return inner_->getNonconstParameterList();
+  }
+  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override { return inner_->unsetParameterList(); }
+  Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override { return inner_->getParameterList(); }
+  Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override {
+    return inner_->getValidParameters();
+  }
+
+ protected:
+  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner_;
 };
 
 }  // namespace cgcm::solver

@@ -1,7 +1,6 @@
 #include "PreconditionerReuse.hpp"
 
 #include <Teuchos_ParameterList.hpp>
-#include <Thyra_LinearOpWithSolveBase.hpp>
 #include <Thyra_PreconditionerFactoryBase.hpp>
 
 #include <stdexcept>
@@ -39,7 +38,7 @@ int krylovIterations(const Thyra::SolveStatus<Real>& status) {
 
 }  // namespace
 
-class ReusingSolve : public Thyra::LinearOpWithSolveBase<Real> {
+class ReusingSolve : public OperatorSolveBase {
  public:
   using Kept = PreconditionerReuseFactory::Kept;
 
@@ -47,10 +46,8 @@ class ReusingSolve : public Thyra::LinearOpWithSolveBase<Real> {
                Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> inner, Teuchos::RCP<Kept> kept)
       : innerFactory_(std::move(innerFactory)), inner_(std::move(inner)), kept_(std::move(kept)) {}
 
-  const Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>>& inner() const { return inner_; }
-
   void initialize(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& src, Thyra::ESupportSolveUse use) {
-    src_ = src;
+    setSource(src);
     use_ = use;
     Kept& k = *kept_;
     if (k.preconditioner.is_null() || k.rebuild || k.age >= k.maxReuse) {
@@ -61,17 +58,7 @@ class ReusingSolve : public Thyra::LinearOpWithSolveBase<Real> {
     innerFactory_->initializePreconditionedOp(src, k.preconditioner, inner_.get(), use);
   }
 
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> range() const override { return inner_->range(); }
-  Teuchos::RCP<const Thyra::VectorSpaceBase<Real>> domain() const override { return inner_->domain(); }
-
  protected:
-  bool opSupportedImpl(Thyra::EOpTransp t) const override { return inner_->opSupported(t); }
-  void applyImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<Real>& X,
-                 const Teuchos::Ptr<Thyra::MultiVectorBase<Real>>& Y, const Real alpha,
-                 const Real beta) const override {
-    inner_->apply(t, X, Y, alpha, beta);
-  }
-  bool solveSupportsImpl(Thyra::EOpTransp t) const override { return inner_->solveSupports(t); }
   bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp t, const Thyra::SolveMeasureType& m) const override {
     return inner_->solveSupportsSolveMeasureType(t, m);
   }
@@ -109,13 +96,12 @@ class ReusingSolve : public Thyra::LinearOpWithSolveBase<Real> {
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> innerFactory_;
   Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> inner_;
   Teuchos::RCP<Kept> kept_;
-  Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>> src_;
   Thyra::ESupportSolveUse use_ = Thyra::SUPPORT_SOLVE_UNSPECIFIED;
 };
 
 PreconditionerReuseFactory::PreconditionerReuseFactory(Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner,
                                                        int maxReuse, Real growthLimit)
-    : inner_(std::move(inner)), kept_(Teuchos::rcp(new Kept)) {
+    : DecoratingSolveFactory(std::move(inner)), kept_(Teuchos::rcp(new Kept)) {
   if (maxReuse < 0 || !(growthLimit >= 1.0))
     throw std::logic_error("PreconditionerReuseFactory: maxReuse >= 0 and growthLimit >= 1");
   kept_->factory = inner_->getPreconditionerFactory();
@@ -135,17 +121,6 @@ void PreconditionerReuseFactory::initializeOp(const Teuchos::RCP<const Thyra::Li
                                               const Thyra::ESupportSolveUse supportSolveUse) const {
   TEUCHOS_TEST_FOR_EXCEPT(Op == nullptr || fwdOpSrc.is_null());
   Teuchos::dyn_cast<ReusingSolve>(*Op).initialize(fwdOpSrc, supportSolveUse);
-}
-
-void PreconditionerReuseFactory::uninitializeOp(Thyra::LinearOpWithSolveBase<Real>* Op,
-                                                Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* fwdOpSrc,
-                                                Teuchos::RCP<const Thyra::PreconditionerBase<Real>>* prec,
-                                                Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* approxFwdOpSrc,
-                                                Thyra::ESupportSolveUse* supportSolveUse) const {
-  TEUCHOS_TEST_FOR_EXCEPT(Op == nullptr);
-  inner_->uninitializeOp(Teuchos::dyn_cast<ReusingSolve>(*Op).inner().get(), fwdOpSrc, nullptr, approxFwdOpSrc,
-                         supportSolveUse);
-  if (prec) *prec = Teuchos::null;  // the decorator's own, as an inner strategy's would be
 }
 
 }  // namespace cgcm::solver

@@ -14,15 +14,13 @@
 // then repeated from where it stopped) or, for the next Jacobian, when a
 // solve with it needs more than `growthLimit` times the Krylov iterations of
 // the first solve with it.
-#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
-
-#include "cgcm/core/Types.hpp"
+#include "OperatorSolveBase.hpp"
 
 namespace cgcm::solver {
 
 class ReusingSolve;
 
-class PreconditionerReuseFactory : public Thyra::LinearOpWithSolveFactoryBase<Real> {
+class PreconditionerReuseFactory : public DecoratingSolveFactory {
  public:
   /// `inner`: a Belos strategy with a preconditioner factory (throws std::logic_error without one). One
   /// preconditioner serves every solve object this factory initialises.
@@ -35,36 +33,11 @@ class PreconditionerReuseFactory : public Thyra::LinearOpWithSolveFactoryBase<Re
   Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> createOp() const override;
   void initializeOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
                     Thyra::LinearOpWithSolveBase<Real>* Op, const Thyra::ESupportSolveUse supportSolveUse) const override;
-  void uninitializeOp(Thyra::LinearOpWithSolveBase<Real>* Op,
-                      Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* fwdOpSrc,
-                      Teuchos::RCP<const Thyra::PreconditionerBase<Real>>* prec,
-                      Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>* approxFwdOpSrc,
-                      Thyra::ESupportSolveUse* supportSolveUse) const override;
-  // The preconditioner is the inner strategy's own: none is accepted from outside.
-  bool supportsPreconditionerInputType(const Thyra::EPreconditionerInputType) const override { return false; }
-  void initializePreconditionedOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
-                                  const Teuchos::RCP<const Thyra::PreconditionerBase<Real>>&,
-                                  Thyra::LinearOpWithSolveBase<Real>* Op,
-                                  const Thyra::ESupportSolveUse supportSolveUse) const override {
-    initializeOp(fwdOpSrc, Op, supportSolveUse);
-  }
-
-  // Parameters are the inner strategy's.
-  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& p) override { inner_->setParameterList(p); }
-  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override {
-    return inner_->getNonconstParameterList();
-  }
-  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override { return inner_->unsetParameterList(); }
-  Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override { return inner_->getParameterList(); }
-  Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override {
-    return inner_->getValidParameters();
-  }
 
  private:
   friend class ReusingSolve;
   struct Kept;  ///< the preconditioner and what its solves learnt, shared by the solve objects
 
-  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner_;
   Teuchos::RCP<Kept> kept_;
 };
 

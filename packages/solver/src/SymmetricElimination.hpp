@@ -21,29 +21,14 @@
 namespace cgcm::solver {
 
 /// The inner strategy builds its own preconditioner from A_s: none is accepted.
-class SymmetricEliminationFactory : public OperatorSolveFactoryBase {
+class SymmetricEliminationFactory : public DecoratingSolveFactory {
  public:
-  explicit SymmetricEliminationFactory(Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner)
-      : inner_(std::move(inner)) {}
+  using DecoratingSolveFactory::DecoratingSolveFactory;
 
   bool isCompatible(const Thyra::LinearOpSourceBase<Real>& fwdOpSrc) const override;
   Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> createOp() const override;
   void initializeOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
                     Thyra::LinearOpWithSolveBase<Real>* Op, const Thyra::ESupportSolveUse supportSolveUse) const override;
-
-  // Parameters are the inner strategy's.
-  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& p) override { inner_->setParameterList(p); }
-  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override {
-    return inner_->getNonconstParameterList();
-  }
-  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override { return inner_->unsetParameterList(); }
-  Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override { return inner_->getParameterList(); }
-  Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override {
-    return inner_->getValidParameters();
-  }
-
- private:
-  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner_;
 };
 
 }  // namespace cgcm::solver
