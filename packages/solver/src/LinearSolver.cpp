@@ -74,10 +74,11 @@ Teuchos::RCP<const Teuchos::ParameterList> linearSolverValidParameters() {
   valid->set("Krylov Space", 200, "GMRES restart length", intAtLeast(1));
   valid->set("ILU Fill Level", 2, "level of fill of the Ifpack2 RILUK preconditioner", intAtLeast(0));
   valid->set("Preconditioner Reuse", 0,
-             "Belos types: how many later Jacobians (of the same matrix graph) a preconditioner serves before it is "
+             "Belos types: how many later Jacobians a preconditioner serves, also across load steps, before it is "
              "built again; 0 builds one for every Jacobian. A kept one is built again sooner when a solve with it "
              "fails (the solve is then repeated) or needs more than Preconditioner Growth Limit times the Krylov "
-             "iterations of the first solve with it. Every solve still meets Tolerance with the current Jacobian",
+             "iterations of the first solve with it. Every solve still meets Tolerance with the current Jacobian; "
+             "a kept preconditioner holds the matrix it was built from (more memory)",
              intAtLeast(0));
   valid->set("Preconditioner Growth Limit", 1.5,
              "with Preconditioner Reuse: the Krylov iterations of a solve with a kept preconditioner, relative to "
