@@ -230,8 +230,8 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
   }
   auto strategy = builder.createLinearSolveStrategy("");
   const std::string type = resolvedLinearSolverType(settings, dofsPerNode);
-  const int reuse = settings.get<int>("Preconditioner Reuse");
-  if (reuse > 0 && type.rfind("Belos ", 0) == 0)
+  // a Belos type: stratimikosParameters refused the others
+  if (const int reuse = settings.get<int>("Preconditioner Reuse"); reuse > 0)
     strategy = Teuchos::rcp(
         new PreconditionerReuseFactory(strategy, reuse, settings.get<double>("Preconditioner Growth Limit")));
   if (type == "Belos CG + MueLu") return Teuchos::rcp(new SymmetricEliminationFactory(strategy));

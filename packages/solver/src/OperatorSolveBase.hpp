@@ -1,7 +1,7 @@
 #pragma once
 // What cgcm's solve strategies (MumpsSolver.hpp, SymmetricElimination.hpp,
-// PreconditionerReuse.hpp) share: the object that solves with one forward operator takes its source,
-// spaces and apply from that operator and solves without transposition; the
+// PreconditionerReuse.hpp) share: the object that solves with one forward
+// operator takes its source, spaces and apply from that operator and solves without transposition; the
 // strategy builds its own preconditioning (none is accepted from outside).
 #include <Thyra_LinearOpSourceBase.hpp>
 #include <Thyra_LinearOpWithSolveBase.hpp>
@@ -62,6 +62,9 @@ class DecoratingSolveFactory : public OperatorSolveFactoryBase {
   explicit DecoratingSolveFactory(Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner)
       : inner_(std::move(inner)) {}
 
+  bool isCompatible(const Thyra::LinearOpSourceBase<Real>& fwdOpSrc) const override {
+    return inner_->isCompatible(fwdOpSrc);
+  }
   void setParameterList(const Teuchos::RCP<Teuchos::ParameterList>& p) override { inner_->setParameterList(p); }
   Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override {
     return inner_->getNonconstParameterList();

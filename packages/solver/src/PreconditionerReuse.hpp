@@ -27,9 +27,6 @@ class PreconditionerReuseFactory : public DecoratingSolveFactory {
   PreconditionerReuseFactory(Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> inner, int maxReuse,
                              Real growthLimit);
 
-  bool isCompatible(const Thyra::LinearOpSourceBase<Real>& fwdOpSrc) const override {
-    return inner_->isCompatible(fwdOpSrc);
-  }
   Teuchos::RCP<Thyra::LinearOpWithSolveBase<Real>> createOp() const override;
   void initializeOp(const Teuchos::RCP<const Thyra::LinearOpSourceBase<Real>>& fwdOpSrc,
                     Thyra::LinearOpWithSolveBase<Real>* Op, const Thyra::ESupportSolveUse supportSolveUse) const override;

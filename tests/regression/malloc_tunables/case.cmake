@@ -16,3 +16,6 @@ cgcm_test(AS environment_kept ENVIRONMENT GLIBC_TUNABLES=glibc.malloc.mmap_thres
 cgcm_test(AS glibc_defaults ENVIRONMENT CGCM_HUGE_PAGES=0 CGCM_MMAP_THRESHOLD=0
           PASS "peak memory per rank: [0-9]+ MB \\(malloc in 4 KiB pages\\)"
           COMMAND cgcm ${case_dir}/deck.xml Output/Directory=${run}_glibc_defaults)
+cgcm_test(AS huge_pages_off_in_environment ENVIRONMENT GLIBC_TUNABLES=glibc.malloc.hugetlb=0
+          PASS "peak memory per rank: [0-9]+ MB \\(malloc in 4 KiB pages, blocks from 4 MiB mapped\\)"
+          COMMAND cgcm ${case_dir}/deck.xml Output/Directory=${run}_huge_pages_off_in_environment)

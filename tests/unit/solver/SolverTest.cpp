@@ -745,10 +745,9 @@ KrylovSolve initializeAndSolve(const Thyra::LinearOpWithSolveFactoryBase<double>
 // (3 later Jacobians); N's kept for H exceeds the limit, so the next Jacobian gets a fresh one; a
 // preconditioner serves another matrix (graph) and another solve object of the same factory too (the
 // interaction's graph changes from step to step); a kept one under which the solve fails (Max Iterations)
-// is built anew and the solve repeated
-// from where it stopped, its count the sum of both. Counts of a fresh preconditioner are compared with a
-// solver without reuse to within 2 (MueLu's Chebyshev estimates its eigenvalue bound from a random vector),
-// counts of the same preconditioner on the same matrix exactly.
+// is built anew and the solve repeated from where it stopped, its count the sum of both. Counts of a fresh
+// preconditioner are compared with a solver without reuse to within 2 (MueLu's Chebyshev estimates its
+// eigenvalue bound from a random vector), counts of the same preconditioner on the same matrix exactly.
 TEST(LinearSolver, AKeptPreconditionerServesLaterJacobiansUntilItNoLongerPays) {
   auto comm = Tpetra::getDefaultComm();
   auto map = Teuchos::rcp(new assembly::Map(Tpetra::global_size_t(20000), 0, comm));
@@ -814,6 +813,23 @@ TEST(LinearSolver, AKeptPreconditionerServesLaterJacobiansUntilItNoLongerPays) {
   EXPECT_LE(s.relativeResidual, 1e-10);
   EXPECT_GT(s.iterations, freshH + 4) << "the failed attempt's iterations and the fresh solve's";
   EXPECT_LE(s.iterations, freshH + 4 + freshH + 2);
+}
+
+// MueLu's aggregation drops the weak couplings (below 0.02 of the diagonal) where bodies interact (the
+// tangent is not symmetric) and keeps every coupling without an interaction, where dropping costs.
+TEST(LinearSolver, MueLuDropsWeakCouplingsOnlyWhereBodiesInteract) {
+  for (const std::string type : {"Belos GMRES + MueLu", "Belos CG + MueLu"})
+    for (const bool symmetric : {false, true}) {
+      if (type == "Belos CG + MueLu" && !symmetric) continue;  // refused (below)
+      SCOPED_TRACE(type + (symmetric ? ", no interaction" : ", interaction"));
+      ParameterList settings("Linear Solver");
+      settings.set("Type", type);
+      settings.validateParametersAndSetDefaults(*solver::linearSolverValidParameters());
+      const auto p = solver::stratimikosParameters(settings, 1, 3, Teuchos::null, symmetric);
+      const auto& muelu = p->sublist("Preconditioner Types").sublist("MueLu");
+      if (symmetric) EXPECT_FALSE(muelu.isParameter("aggregation: drop tol"));
+      else EXPECT_EQ(muelu.get<double>("aggregation: drop tol"), 0.02);
+    }
 }
 
 TEST(LinearSolver, ConjugateGradientsAreRefusedForAnUnsymmetricTangent) {

@@ -19,10 +19,29 @@
 // runs itself again with them.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
 namespace cgcm::core {
+
+namespace detail {
+/// The value of glibc tunable `name` in `tunables` (GLIBC_TUNABLES' form, name=value:name=value), or empty.
+inline std::string tunableValue(const std::string& tunables, const std::string& name) {
+  const std::string key = name + "=";
+  for (std::size_t at = 0; at < tunables.size();) {
+    const std::size_t end = std::min(tunables.find(':', at), tunables.size());
+    if (tunables.compare(at, key.size(), key) == 0) return tunables.substr(at + key.size(), end - at - key.size());
+    at = end + 1;
+  }
+  return "";
+}
+/// The same in this process's GLIBC_TUNABLES.
+inline std::string mallocTunable(const std::string& name) {
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  return tunables ? tunableValue(tunables, name) : "";
+}
+}  // namespace detail
 
 /// The mmap threshold tuneMalloc sets, in bytes.
 constexpr long kMallocMmapThreshold = 4L << 20;
@@ -44,7 +63,7 @@ inline void tuneMalloc(char** argv) {
   const std::string before = current ? current : "";
   std::string tunables = before;
   const auto add = [&](const std::string& name, const std::string& value) {
-    if (tunables.find(name + "=") != std::string::npos) return;
+    if (!detail::tunableValue(tunables, name).empty()) return;
     tunables += (tunables.empty() ? "" : ":") + name + "=" + value;
   };
   if (!off("CGCM_HUGE_PAGES")) add("glibc.malloc.hugetlb", "1");
@@ -56,18 +75,6 @@ inline void tuneMalloc(char** argv) {
 #endif
 }
 
-namespace detail {
-/// The value of glibc tunable `name` in this process's GLIBC_TUNABLES, or empty.
-inline std::string mallocTunable(const std::string& name) {
-  const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (!tunables) return "";
-  const std::string t = tunables, key = name + "=";
-  const auto at = t.find(key);
-  if (at == std::string::npos) return "";
-  const auto end = t.find(':', at);
-  return t.substr(at + key.size(), end == std::string::npos ? std::string::npos : end - at - key.size());
-}
-}  // namespace detail
 
 /// Whether glibc's malloc was told to use huge pages in this process (the
 /// tunable glibc.malloc.hugetlb set to 1 or 2, by tuneMalloc or by the

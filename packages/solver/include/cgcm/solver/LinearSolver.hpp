@@ -28,14 +28,17 @@ std::string resolvedLinearSolverType(const Teuchos::ParameterList& settings, int
 /// The Stratimikos parameter list the settings stand for on `numRanks` ranks.
 /// Throws InputError for KLU2 on more than one rank, and for CG when the
 /// tangent is not `symmetric` (true when the Jacobian is symmetric apart from
-/// its Dirichlet rows: no interaction). MueLu gets `nearNullSpace`
-/// (assembly::rigidBodyModes) when it is given.
+/// its Dirichlet rows: no interaction), and for Preconditioner Reuse with a
+/// type other than Belos. MueLu gets `nearNullSpace` (assembly::rigidBodyModes)
+/// when it is given, and drops couplings below 0.02 of the diagonal in its
+/// aggregation when the tangent is not `symmetric` (bodies interact).
 Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(
     const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
     const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace = Teuchos::null, bool symmetric = false);
 
-/// Builds the solver factory from validated settings (CG: wrapped in the
-/// symmetric elimination of the Dirichlet rows).
+/// Builds the solver factory from validated settings (Preconditioner Reuse > 0:
+/// the Belos strategy wrapped in the reuse of its preconditioner; CG: wrapped in
+/// the symmetric elimination of the Dirichlet rows).
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<Real>> buildLinearSolver(
     const Teuchos::ParameterList& settings, int numRanks, int dofsPerNode,
     const Teuchos::RCP<const assembly::MultiVector>& nearNullSpace = Teuchos::null, bool symmetric = false);
