@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include "cgcm/interaction/ClosestPointSearch.hpp"
 
 namespace cgcm::app {
@@ -50,11 +52,7 @@ mesh::Surface straightPieces(const mesh::Surface& s, int dim) {
 }  // namespace
 
 ContactProbe::ContactProbe(const mesh::ContactGeometry& c, const mesh::Mesh& m, assembly::Problem& problem)
-    : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)),
-      upperNodes_(m.surfaces[c.upperBody].facets), lowerSurface_(straightPieces(m.surfaces[c.lowerBody], m.dim)) {
-  std::sort(upperNodes_.begin(), upperNodes_.end());
-  upperNodes_.erase(std::unique(upperNodes_.begin(), upperNodes_.end()), upperNodes_.end());
-}
+    : c_(c), mesh_(m), problem_(problem), upper_(m.nodeSet(c.upperApex).at(0)), lower_(m.nodeSet(c.lowerApex).at(0)) {}
 
 Real ContactProbe::gap(const Vector& u) const {
   const int y = mesh_.dim - 1;
@@ -63,31 +61,62 @@ Real ContactProbe::gap(const Vector& u) const {
 }
 
 Real ContactProbe::contactRadius(const Vector& u) const {
-  const std::vector<Real>& x = problem_.currentCoordinates(u);
+  // Each rank measures the nodes of its own facets of the upper body against the lower body's facets it
+  // holds (all within the interaction's reach of them); the profile's crossing of the contact distance is
+  // then found by reductions: the first node, in order of (radius, distance), at or beyond the contact
+  // distance, and the last before it.
+  const auto held = problem_.heldSurfaces(u);
+  const std::vector<Real>& x = *held.coords;
   const int dim = mesh_.dim;
+  const mesh::Surface& upper = (*held.surfaces)[std::size_t(c_.upperBody)];
+  const mesh::Surface lower = straightPieces((*held.surfaces)[std::size_t(c_.lowerBody)], dim);
   auto search = interaction::makeClosestPointSearch(dim);
-  search->build(x.data(), lowerSurface_);
+  search->build(x.data(), lower);
+  std::vector<LocalIndex> upperNodes(upper.facets.begin(),
+                                     upper.facets.begin() + std::ptrdiff_t(held.ownFacets[std::size_t(c_.upperBody)]) *
+                                                                upper.nodesPerFacet);
+  std::sort(upperNodes.begin(), upperNodes.end());
+  upperNodes.erase(std::unique(upperNodes.begin(), upperNodes.end()), upperNodes.end());
   // radius: x (the axis is x = 0) in 2D; in 3D the distance from the vertical line through the upper apex
   const Real apex[2] = {dim == 3 ? mesh_.coord(upper_, 0) + problem_.nodeValue(u, upper_, 0) : 0.0,
                         dim == 3 ? mesh_.coord(upper_, 1) + problem_.nodeValue(u, upper_, 1) : 0.0};
-  std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of upper surface nodes
+  constexpr Real inf = std::numeric_limits<Real>::infinity();
+  std::vector<std::pair<Real, Real>> profile;  // (radius, distance) of this rank's upper surface nodes
   const Real reach = 20.0 * c_.contactDistance;
-  for (LocalIndex n : upperNodes_) {
+  for (LocalIndex n : upperNodes) {
     const Real* p = &x[std::size_t(n) * dim];
     const auto proj = search->project(p, reach);
     const Real radius = dim == 3 ? std::hypot(p[0] - apex[0], p[1] - apex[1]) : p[0];
-    profile.push_back({radius, proj.found() ? proj.distance : std::numeric_limits<Real>::infinity()});
+    profile.push_back({radius, proj.found() ? proj.distance : inf});
   }
-  std::sort(profile.begin(), profile.end());
-  if (profile.empty() || profile[0].second >= c_.contactDistance) return 0.0;
-  for (std::size_t k = 1; k < profile.size(); ++k)
-    if (profile[k].second >= c_.contactDistance) {
-      const auto& [r0, d0] = profile[k - 1];
-      const auto& [r1, d1] = profile[k];
-      if (!std::isfinite(d1)) return r1;
-      return r0 + (c_.contactDistance - d0) / (d1 - d0) * (r1 - r0);
-    }
-  return profile.back().first;
+  const auto& comm = *problem_.dofs().comm();
+  auto reduce = [&](Real mine, Teuchos::EReductionType type) {
+    Real all = 0.0;
+    Teuchos::reduceAll(comm, type, mine, Teuchos::outArg(all));
+    return all;
+  };
+  const Real cd = c_.contactDistance;
+  Real r1 = inf, rMost = -inf;  // the first radius at or beyond the contact distance; the largest radius
+  for (const auto& [r, d] : profile) {
+    if (d >= cd) r1 = std::min(r1, r);
+    rMost = std::max(rMost, r);
+  }
+  r1 = reduce(r1, Teuchos::REDUCE_MIN);
+  if (r1 == inf) return std::max(0.0, reduce(rMost, Teuchos::REDUCE_MAX));  // every node within: the last radius
+  Real d1 = inf, r0 = -inf;  // the distance at r1; the last radius before it (within the contact distance)
+  for (const auto& [r, d] : profile) {
+    if (r == r1 && d >= cd) d1 = std::min(d1, d);
+    if (d < cd && r <= r1) r0 = std::max(r0, r);
+  }
+  d1 = reduce(d1, Teuchos::REDUCE_MIN);
+  r0 = reduce(r0, Teuchos::REDUCE_MAX);
+  if (r0 == -inf) return 0.0;  // the innermost node is already beyond the contact distance
+  Real d0 = -inf;
+  for (const auto& [r, d] : profile)
+    if (r == r0 && d < cd) d0 = std::max(d0, d);
+  d0 = reduce(d0, Teuchos::REDUCE_MAX);
+  if (!std::isfinite(d1)) return r1;
+  return r0 + (cd - d0) / (d1 - d0) * (r1 - r0);
 }
 
 Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretization& disc, const ContactProbe* probe,

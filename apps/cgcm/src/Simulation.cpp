@@ -97,12 +97,18 @@ void measureCost(RunResult& result, const solver::Discretization& disc, const so
     const double mine = double(usage.ru_maxrss) / 1024.0;
     result.peakMemoryMB.assign(comm.getSize(), 0.0);
     Teuchos::gatherAll(comm, 1, &mine, comm.getSize(), result.peakMemoryMB.data());
-    long facets = 0;  // the interacting surfaces a rank holds (its own facets' search runs against them)
-    for (const auto& s : disc.mesh->surfaces) facets += long(s.numFacets());
-    const long held[3] = {long(disc.mesh->numCells()), long(disc.mesh->numNodes()), facets};
-    std::vector<long> all(3 * std::size_t(comm.getSize()));
-    Teuchos::gatherAll(comm, 3, held, int(all.size()), all.data());
-    for (int r = 0; r < comm.getSize(); ++r) result.meshHeld.push_back({all[3 * r], all[3 * r + 1], all[3 * r + 2]});
+    // the interacting surfaces a rank holds: its own facets and (Method 3) the ghosts near them
+    long own = 0, ghosts = 0;
+    for (const auto& s : disc.mesh->surfaces) own += long(s.numFacets());
+    if (const auto* part = problem->surfaceInteractionPart()) {
+      ghosts = part->held().numGhostFacets();
+      result.surfaceGathers = part->held().numGathers();
+    }
+    const long held[4] = {long(disc.mesh->numCells()), long(disc.mesh->numNodes()), own, ghosts};
+    std::vector<long> all(4 * std::size_t(comm.getSize()));
+    Teuchos::gatherAll(comm, 4, held, int(all.size()), all.data());
+    for (int r = 0; r < comm.getSize(); ++r)
+      result.meshHeld.push_back({all[4 * r], all[4 * r + 1], all[4 * r + 2], all[4 * r + 3]});
   }
   const auto& t = problem->timings();
   result.assemblySeconds = (t.residual + t.jacobian) - (timingsBefore.residual + timingsBefore.jacobian);

@@ -90,15 +90,21 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
     both((line + "\n").c_str());
   }
   if (result.meshHeld.size() > 1) {
-    std::string line = "mesh held per rank (cells, nodes, surface facets):";
+    std::string line = "mesh held per rank (cells, nodes, surface facets own + ghost):";
     for (std::size_t r = 0; r < result.meshHeld.size(); ++r) {
-      std::snprintf(buf, sizeof buf, "%s %ld, %ld, %ld", r == 0 ? "" : ";", result.meshHeld[r][0],
-                    result.meshHeld[r][1], result.meshHeld[r][2]);
+      std::snprintf(buf, sizeof buf, "%s %ld, %ld, %ld + %ld", r == 0 ? "" : ";", result.meshHeld[r][0],
+                    result.meshHeld[r][1], result.meshHeld[r][2], result.meshHeld[r][3]);
       line += buf;
     }
-    std::snprintf(buf, sizeof buf, " of %zu, %zu, %zu%s", result.numCells, result.numNodes, result.numSurfaceFacets,
-                  result.volumePairs.empty() ? "" : " (Method 1 reads the whole mesh)");
-    both((line + buf + "\n").c_str());
+    std::snprintf(buf, sizeof buf, " of %zu, %zu, %zu", result.numCells, result.numNodes, result.numSurfaceFacets);
+    line += buf;
+    if (!result.volumePairs.empty()) {
+      line += " (Method 1 reads the whole mesh)";
+    } else if (result.surfaceGathers > 0) {
+      std::snprintf(buf, sizeof buf, "; ghosts gathered %ld times", result.surfaceGathers);
+      line += buf;
+    }
+    both((line + "\n").c_str());
   }
   if (!result.volumePairs.empty()) both((result.volumePairs + "\n").c_str());
 }

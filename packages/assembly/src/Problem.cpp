@@ -87,7 +87,7 @@ void Problem::buildGraph() {
   if (!cellNeighboursFound_) findCellNeighbours();
   const Map& overlap = *dofs_->overlapMap();
   const std::size_t numOverlapNodes = cellNeighbours_.size();
-  std::vector<std::vector<LocalIndex>> partners(numOverlapNodes);  // mesh node indices
+  std::vector<std::vector<GlobalIndex>> partners(numOverlapNodes);  // global node ids
   std::vector<Real> partnersHere(numOverlapNodes, 0.0);
   for (const auto& [r, c] : extraCouplings_) {
     const LocalIndex row = overlap.getLocalElement(dofs_->dof(r, 0));
@@ -110,8 +110,8 @@ void Problem::buildGraph() {
       cols.reserve((cellNeighbours_[k].size() + partners[k].size()) * dim_);
       for (LocalIndex m : cellNeighbours_[k])
         for (int j = 0; j < dim_; ++j) cols.push_back(overlap.getGlobalElement(LocalIndex(m * dim_ + j)));
-      for (LocalIndex c : partners[k])
-        for (int j = 0; j < dim_; ++j) cols.push_back(dofs_->dof(c, j));
+      for (GlobalIndex c : partners[k])
+        for (int j = 0; j < dim_; ++j) cols.push_back(c * dim_ + j);
       std::sort(cols.begin(), cols.end());
       cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
       const long long remote = remoteCellNodes_[k] + std::llround(partnersAll[k] - partnersHere[k]);
@@ -245,14 +245,14 @@ Teuchos::RCP<Vector> Problem::interactionNodeForces(const Vector& u) {
   return forces;
 }
 
-std::vector<std::pair<LocalIndex, LocalIndex>> Problem::interactionCouplings(const Vector& u, Real radius) {
+std::vector<std::pair<LocalIndex, GlobalIndex>> Problem::interactionCouplings(const Vector& u, Real radius) {
   const auto t0 = Clock::now();
   auto wanted = interactionPart_->couplings(u, radius);
   timings_.graph += secondsSince(t0);
   return wanted;
 }
 
-bool Problem::graphHoldsEverywhere(const std::vector<std::pair<LocalIndex, LocalIndex>>& wanted) const {
+bool Problem::graphHoldsEverywhere(const std::vector<std::pair<LocalIndex, GlobalIndex>>& wanted) const {
   const int missing = graph_.is_null() || !std::includes(extraCouplings_.begin(), extraCouplings_.end(),
                                                          wanted.begin(), wanted.end());
   int anyMissing = 0;

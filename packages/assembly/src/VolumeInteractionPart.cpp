@@ -1,5 +1,6 @@
 #include "cgcm/assembly/VolumeInteractionPart.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -22,7 +23,10 @@ std::vector<LocalIndex> cellNodes(const mesh::Mesh& mesh) {
 VolumeInteractionPart::VolumeInteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
                                              std::shared_ptr<interaction::VolumeInteraction> interaction,
                                              Real searchRadiusFactor)
-    : InteractionPart(std::move(dofs)), interaction_(std::move(interaction)), searchRadiusFactor_(searchRadiusFactor),
+    : InteractionPart(std::move(dofs)),
+      mesh_(&mesh),
+      interaction_(std::move(interaction)),
+      searchRadiusFactor_(searchRadiusFactor),
       // every node of every cell: the bodies' volumes near each other are not known in advance
       coords_(*dofs_, mesh, cellNodes(mesh)) {
   if (!(searchRadiusFactor > 1.0))
@@ -111,12 +115,21 @@ InteractionPart::Outcome VolumeInteractionPart::assemble(const Vector& u, const 
   return out;
 }
 
-std::vector<std::pair<LocalIndex, LocalIndex>> VolumeInteractionPart::couplings(const Vector& u, Real radius) {
+std::vector<std::pair<LocalIndex, GlobalIndex>> VolumeInteractionPart::couplings(const Vector& u, Real radius) {
   const std::vector<Real>& x = coords_.update(u);
-  std::vector<std::pair<LocalIndex, LocalIndex>> wanted;
-  for (const auto& rc : interaction_->couplings(x.data(), radius))
-    if (rowIds_(rc.first, 0) >= 0) wanted.push_back(rc);
+  std::vector<std::pair<LocalIndex, GlobalIndex>> wanted;
+  for (const auto& [row, column] : interaction_->couplings(x.data(), radius))
+    if (rowIds_(row, 0) >= 0) wanted.emplace_back(row, dofs_->globalNode(column));
+  std::sort(wanted.begin(), wanted.end());
   return wanted;
+}
+
+InteractionPart::HeldSurfaces VolumeInteractionPart::heldSurfaces(const Vector& u) {
+  HeldSurfaces out;
+  out.surfaces = &mesh_->surfaces;
+  out.coords = &coords_.update(u);
+  for (const auto& s : mesh_->surfaces) out.ownFacets.push_back(s.numFacets());
+  return out;
 }
 
 std::vector<std::array<Real, 3>> VolumeInteractionPart::forces() const {

@@ -77,31 +77,11 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
       options_(options) {
   if (!potential_) throw InputError("surface interaction: no pair potential given");
   kernel_ = potential_->kernelPotential();
-  if (surfaces_.size() != densities_.size()) {
-    std::ostringstream os;
-    os << "surface interaction: " << surfaces_.size() << " surfaces but " << densities_.size()
-       << " densities (one per body)";
-    throw InputError(os.str());
-  }
   dim_ = options_.formulation == Formulation::ThreeD ? 3 : 2;
-  for (std::size_t k = 0; k < surfaces_.size(); ++k) {
-    const int npf = surfaces_[k].nodesPerFacet;
-    if (surfaces_[k].numFacets() > 0 &&
-        (dim_ == 2 ? npf != 2 && npf != 3 : npf != 3 && npf != 4 && npf != 6 && npf != 8 && npf != 9))
-      throw InputError("surface interaction: " +
-                       std::string(dim_ == 2 ? "2D surfaces need 2 or 3 nodes per facet"
-                                             : "3D surfaces need 3, 4 (flat) or 6, 8, 9 (curved) nodes per facet") +
-                       " (body " + std::to_string(k) + " has " + std::to_string(npf) + ")");
-    // the 3D kernels pair flat facets with flat ones, curved with curved
-    if (dim_ == 3 && k > 0 && surfaces_[k].numFacets() > 0 && surfaces_[0].numFacets() > 0 &&
-        (npf > 4) != (surfaces_[0].nodesPerFacet > 4))
-      throw InputError("surface interaction: in 3D the bodies' facets must be all flat or all curved (body 0 has " +
-                       std::to_string(surfaces_[0].nodesPerFacet) + " nodes per facet, body " + std::to_string(k) +
-                       " has " + std::to_string(npf) + ")");
+  for (std::size_t k = 0; k < densities_.size(); ++k)
     if (!(densities_[k] > 0.0) || !std::isfinite(densities_[k]))
       throw InputError("surface interaction: density of body " + std::to_string(k) +
                        " must be finite and > 0");
-  }
   if (options_.quadraturePoints < 1 || options_.quadraturePoints > 64)
     throw InputError("surface interaction: quadraturePoints must be in [1, 64], got " +
                      std::to_string(options_.quadraturePoints));
@@ -131,6 +111,41 @@ SurfaceInteraction::SurfaceInteraction(std::vector<mesh::Surface> surfaces, std:
   summary_.resultant.assign(surfaces_.size(), {0.0, 0.0, 0.0});
   search_.resize(surfaces_.size());
   for (auto& s : search_) s = makeClosestPointSearch(dim_, options_.search);
+  setSurfaces(std::move(surfaces_));
+}
+
+void SurfaceInteraction::setSurfaces(std::vector<mesh::Surface> surfaces) {
+  if (surfaces.size() != densities_.size()) {
+    std::ostringstream os;
+    os << "surface interaction: " << surfaces.size() << " surfaces but " << densities_.size()
+       << " densities (one per body)";
+    throw InputError(os.str());
+  }
+  const mesh::Surface* first = nullptr;  // the first body with facets: the 3D kernels pair flat with flat
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    const int npf = surfaces[k].nodesPerFacet;
+    if (surfaces[k].numFacets() == 0) continue;
+    if (dim_ == 2 ? npf != 2 && npf != 3 : npf != 3 && npf != 4 && npf != 6 && npf != 8 && npf != 9)
+      throw InputError("surface interaction: " +
+                       std::string(dim_ == 2 ? "2D surfaces need 2 or 3 nodes per facet"
+                                             : "3D surfaces need 3, 4 (flat) or 6, 8, 9 (curved) nodes per facet") +
+                       " (body " + std::to_string(k) + " has " + std::to_string(npf) + ")");
+    if (!first) first = &surfaces[k];
+    if (dim_ == 3 && (npf > 4) != (first->nodesPerFacet > 4))
+      throw InputError("surface interaction: in 3D the bodies' facets must be all flat or all curved (body " +
+                       std::to_string(first->body) + " has " + std::to_string(first->nodesPerFacet) +
+                       " nodes per facet, body " + std::to_string(k) + " has " + std::to_string(npf) + ")");
+  }
+  surfaces_ = std::move(surfaces);
+  surfaceNodes_.clear();
+  targets_.clear();
+  facetRules_.clear();
+  firstPoint_.clear();
+  neighbours_.clear();
+  pairs_.clear();
+  evaluatedFacets_.clear();
+  referenceAreas_.clear();
+  searchedCoords_.clear();  // the next updatePairs searches anew
   for (const mesh::Surface& sk : surfaces_) surfaceNodes_.insert(surfaceNodes_.end(), sk.facets.begin(), sk.facets.end());
   std::sort(surfaceNodes_.begin(), surfaceNodes_.end());
   surfaceNodes_.erase(std::unique(surfaceNodes_.begin(), surfaceNodes_.end()), surfaceNodes_.end());
@@ -1023,6 +1038,33 @@ void SurfaceInteraction::accumulate(const InteractionPair& p, const PairState& s
   if (st.region != 0) ++summary_.numVertexProjections;
 }
 
+Real SurfaceInteraction::lebesgue() const {
+  Real most = 1.0;
+  for (int l = 0; l < numBodies(); ++l)
+    if (curved(l)) most = std::max(most, lebesgueConstant(dim_, surfaces_[l].nodesPerFacet));
+  return most;
+}
+
+Real SurfaceInteraction::blendReach() const {
+  bool anyCurved = false;
+  for (int l = 0; l < numBodies(); ++l) anyCurved = anyCurved || curved(l);
+  return dim_ == 2 || anyCurved ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
+}
+
+Real SurfaceInteraction::largestCoverDeviation(const Real* coords) const {
+  Real most = 0.0;
+  std::vector<Real> points;
+  for (int l = 0; l < numBodies(); ++l) most = std::max(most, cover(coords, l, points));
+  return most;
+}
+
+Real SurfaceInteraction::readingReach(Real radius, Real deviation) const {
+  // couplings: the nearest facet within cutoff + skin + blend + 2 deviation, then every facet within
+  // that distance + 2 skin + blend + 4 deviation (updatePairs reads less: radius = cutoff, skin 0)
+  const Real skin = std::max(radius - cutoff_, 0.0) * lebesgue();
+  return cutoff_ + 3.0 * skin + 2.0 * blendReach() + 6.0 * deviation;
+}
+
 std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(const Real* coords,
                                                                              Real radius) const {
   const int nb = numBodies();
@@ -1033,11 +1075,7 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
   // Curved facets: their covers are searched (within the cover deviation of
   // the facets), and a node moving by m moves a facet by up to its Lebesgue
   // constant times m (lebesgueConstant).
-  bool anyCurved = false;
-  Real lebesgue = 1.0;
-  for (int l = 0; l < nb; ++l)
-    if (curved(l)) anyCurved = true, lebesgue = std::max(lebesgue, lebesgueConstant(dim_, surfaces_[l].nodesPerFacet));
-  const Real blend = dim_ == 2 || anyCurved ? (kSmoothingRange + 1.0) * smoothing_ : 0.0;
+  const Real blend = blendReach();
   std::vector<Real> deviation(nb, 0.0);
   std::vector<std::vector<Real>> coverPoints(nb);
   Real margin = 0.0;
@@ -1045,7 +1083,7 @@ std::vector<std::pair<LocalIndex, LocalIndex>> SurfaceInteraction::couplings(con
     deviation[l] = cover(coords, l, coverPoints[l]);
     margin = std::max(margin, 2.0 * deviation[l]);
   }
-  const Real skin = std::max(radius - cutoff_, 0.0) * lebesgue;
+  const Real skin = std::max(radius - cutoff_, 0.0) * lebesgue();
   const std::vector<char> bodies = bodiesWithin(coords, cutoff_ + skin + blend + margin);
   std::vector<std::unique_ptr<ClosestPointSearch>> search(nb);
   for (int l = 0; l < nb; ++l) {

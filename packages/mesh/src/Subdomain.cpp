@@ -34,8 +34,6 @@ Mesh subdomain(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
   const auto orphan = std::find(inCell.begin(), inCell.end(), 0);
   if (orphan != inCell.end())
     throw std::logic_error("mesh::subdomain: node " + std::to_string(orphan - inCell.begin()) + " belongs to no cell");
-  for (const auto& s : whole.surfaces)
-    for (LocalIndex n : s.facets) kept[std::size_t(n)] = 1;
   for (LocalIndex n : alsoKept) kept.at(std::size_t(n)) = 1;
 
   Mesh sub;
@@ -71,8 +69,13 @@ Mesh subdomain(const Mesh& whole, const std::vector<int>& cellOwner, int rank, c
     Surface t;
     t.body = s.body;
     t.nodesPerFacet = s.nodesPerFacet;
-    for (LocalIndex n : s.facets) t.facets.push_back(index[std::size_t(n)]);
-    for (LocalIndex c : s.facetCells) t.facetCells.push_back(cellInSubdomain[std::size_t(c)]);
+    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+      const LocalIndex c = cellInSubdomain[std::size_t(s.facetCells[f])];
+      if (c < 0) continue;  // another rank's facet
+      for (int a = 0; a < s.nodesPerFacet; ++a)
+        t.facets.push_back(index[std::size_t(s.facets[std::size_t(f) * s.nodesPerFacet + a])]);
+      t.facetCells.push_back(c);
+    }
     sub.surfaces.push_back(std::move(t));
   }
   return sub;

@@ -11,11 +11,13 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
 #include <vector>
 
+#include "cgcm/assembly/GhostedSurfaces.hpp"
 #include "cgcm/assembly/Problem.hpp"
 #include "cgcm/assembly/SurfaceTraction.hpp"
 #include "cgcm/core/Error.hpp"
@@ -338,12 +340,14 @@ TEST(Problem, IsTheSumOfItsParts) {
   TwoBodies t(13);
   auto& [m, dofs, mat, bulk, full, si, u] = t;
   const auto fb = residual(bulk, u), ff = residual(full, u);
-  // the interaction evaluated alone, outside Tpetra
+  // the interaction evaluated alone, outside Tpetra, on the mesh's surfaces and numbering (the problem's
+  // holds its surfaces in a numbering of its own)
+  const auto alone = methodThree(*m);
   std::vector<Real> x(m->coords);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] += u[i];
   std::vector<interaction::PairContribution> c;
-  si->updatePairs(x);
-  si->evaluate(x, c, false);
+  alone->updatePairs(x);
+  alone->evaluate(x, c, false);
   std::vector<Real> fi(x.size(), 0.0);
   for (const auto& p : c)
     for (int a = 0; a < p.numRowNodes; ++a)
@@ -427,13 +431,16 @@ TEST(InteractionPart, NodeForcesAreThoseOfThePairs) {
   p.evaluate(uv, f, nullptr);
   const auto evaluated = p.interactionForces();
   // the pairs of this rank's facets from the last evaluation, one by one, summed over the ranks
-  const std::vector<Real>& x = p.currentCoordinates(uv);
+  // (the pairs' nodes are numbered as the surfaces the rank holds: their global ids are the mesh's nodes)
+  const std::vector<Real>& x = *p.heldSurfaces(uv).coords;
+  const GhostedSurfaces& held = p.surfaceInteractionPart()->held();
   std::vector<Real> local(3 * std::size_t(m->numNodes()), 0.0), pairs(local.size(), 0.0);
   interaction::PairContribution c;
   for (const auto& pair : si->pairs()) {
     si->evaluatePair(x.data(), pair, c, false);
     for (int a = 0; a < c.numRowNodes; ++a)
-      for (int i = 0; i < 3; ++i) local[3 * std::size_t(c.rowNodes[a]) + std::size_t(i)] -= c.f[3 * a + i];
+      for (int i = 0; i < 3; ++i)
+        local[3 * std::size_t(held.globalNode(c.rowNodes[a])) + std::size_t(i)] -= c.f[3 * a + i];
   }
   Teuchos::reduceAll(*dofs->comm(), Teuchos::REDUCE_SUM, int(local.size()), local.data(), pairs.data());
   const std::vector<Real> nodeForces = gatherByMeshNode(*dofs, *p.interactionNodeForces(uv));
@@ -719,9 +726,9 @@ TEST(DofMap, NodeIdsOnlyLabelTheDofs) {
               Tpetra::getDefaultComm()->getSize());
 }
 
-// Each rank holding only its part of the mesh (its cells, the nodes they touch and the whole surfaces)
-// assembles what the ranks holding it whole assemble: the same dof distribution, residual, tangent,
-// interaction forces and rigid-body modes, on 1 and 2 ranks.
+// Each rank holding only its part of the mesh (its cells, the nodes they touch and their facets; the
+// other ranks' facets near them as ghosts) assembles what the ranks holding it whole assemble: the same
+// dof distribution, residual, tangent, interaction forces and rigid-body modes, on 1 and 2 ranks.
 TEST(DofMap, RanksHoldingTheirPartsAssembleWhatTheWholeMeshGives) {
   auto comm = Tpetra::getDefaultComm();
   auto whole = twoBoxes(0.3, 4);  // interior nodes: a rank's part leaves out those of the other's cells
@@ -739,14 +746,162 @@ TEST(DofMap, RanksHoldingTheirPartsAssembleWhatTheWholeMeshGives) {
     EXPECT_LT(part->numNodes(), whole->numNodes());
   }
   ASSERT_EQ(part->surfaces.size(), whole->surfaces.size());
-  for (std::size_t s = 0; s < part->surfaces.size(); ++s)
-    EXPECT_EQ(part->surfaces[s].numFacets(), whole->surfaces[s].numFacets());
+  for (std::size_t s = 0; s < part->surfaces.size(); ++s) {  // each facet on one rank: its cell's
+    int facets = int(part->surfaces[s].numFacets()), all = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, facets, Teuchos::outArg(all));
+    EXPECT_EQ(all, whole->surfaces[s].numFacets());
+  }
 
   const auto u = randomDisplacement(3 * std::size_t(whole->numNodes()), 0.02, 23);
   const Gathered a = evaluateGathered(whole, wholeDofs, u, byGlobalId), b = evaluateGathered(part, partDofs, u, byGlobalId);
   const auto [fDiff, jDiff] = expectSameEvaluation(a, b);
   std::printf("[local part] rank %d holds %d of %d cells, %d of %d nodes: |df| %.1e, |dJ| %.1e\n", comm->getRank(),
               part->numCells(), whole->numCells(), part->numNodes(), whole->numNodes(), fDiff, jDiff);
+}
+
+// The residual and tangent of a problem on the owned rows, gathered on every rank by the dof's global
+// index (dense).
+std::pair<std::vector<Real>, std::vector<Real>> gatherResidualAndTangent(Problem& p, const Vector& u, std::size_t n) {
+  const Map& owned = *p.dofs().ownedMap();
+  Vector f(p.dofs().ownedMap());
+  auto J = p.createMatrix();
+  p.evaluate(u, f, J.get());
+  std::vector<Real> fl(n, 0.0), Kl(n * n, 0.0), fa(n, 0.0), Ka(n * n, 0.0);
+  auto fh = f.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t lid = 0; lid < owned.getNodeNumElements(); ++lid) {
+    const auto row = std::size_t(owned.getGlobalElement(LocalIndex(lid)));
+    fl[row] = fh(lid, 0);
+    Matrix::nonconst_local_inds_host_view_type cols("cols", J->getNumEntriesInLocalRow(LocalIndex(lid)));
+    Matrix::nonconst_values_host_view_type vals("vals", cols.extent(0));
+    std::size_t count = 0;
+    J->getLocalRowCopy(LocalIndex(lid), cols, vals, count);
+    for (std::size_t k = 0; k < count; ++k)
+      Kl[row * n + std::size_t(J->getColMap()->getGlobalElement(cols(k)))] += vals(k);
+  }
+  const Teuchos::Comm<int>& comm = *p.dofs().comm();
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(n), fl.data(), fa.data());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, int(n * n), Kl.data(), Ka.data());
+  return {fa, Ka};
+}
+
+// Each rank holds its own facets and the other ranks' facets near them: two boxes approaching each
+// other (the upper one moved down rigidly, with a small random field on top) from beyond the ghosts'
+// radius to within 2.5 r0. At every state the interaction's residual and tangent assembled from the ranks'
+// parts are those of the whole surfaces evaluated alone on the mesh's numbering (1e-12 of the largest
+// entry: the same pairs summed in another order), the ghosts are gathered anew as the gap closes, and a
+// rank holds no ghosts while the bodies are far apart and never the whole other surface. 1 and 2 ranks.
+TEST(GhostedSurfaces, AnApproachGathersAnewAndAssemblesWhatTheWholeSurfacesGive) {
+  auto comm = Tpetra::getDefaultComm();
+  const auto whole = twoBoxes(0.5, 4);
+  const auto owners = partitionCells(*comm, *whole, CellPartition::Geometric);
+  auto part = std::make_shared<mesh::Mesh>(mesh::subdomain(*whole, owners, comm->getRank()));
+  auto dofs = Teuchos::rcp(new DofMap(comm, *part, 3, CellPartition::Subdomain));
+  interaction::SurfaceInteractionOptions o;
+  o.formulation = Formulation::ThreeD;
+  o.quadraturePoints = 2;
+  o.cutoff = 0.1;  // 5 r0; the search radius 0.15, the ghosts' radius about 0.3
+  // the closest triangle alone: the boxes' sharp edges put points beyond a convex edge, where the 3D blend's
+  // offset penalty (o^2/delta, o up to the cells' size) would favour a triangle beyond the cutoff
+  o.projectionSmoothing = 0.0;
+  const auto potential = interaction::makePotential("lennard-jones", 1e5, 0.02);  // forces as large as the bulk's
+  auto make = [&](const mesh::Mesh& m) {
+    return std::make_shared<interaction::SurfaceInteraction>(m.surfaces, std::vector<Real>{1.0, 1.0}, potential, o);
+  };
+  const auto mat = material::NeoHookean::fromYoungPoisson(1.0, 0.3);
+  Problem bulk(dofs, part, Formulation::ThreeD, mat), full(dofs, part, Formulation::ThreeD, mat);
+  full.setInteraction(make(*part), 1.5);
+  const GhostedSurfaces& held = full.surfaceInteractionPart()->held();
+  const auto alone = make(*whole);  // every facet, on every rank
+
+  const std::size_t n = 3 * std::size_t(whole->numNodes());
+  const auto wiggle = randomDisplacement(n, 0.002, 41);
+  long upperFacets = whole->surfaces[1].numFacets(), lowerFacets = whole->surfaces[0].numFacets();
+  Real largest = 0.0;
+  for (const Real drop : {0.0, 0.1, 0.2, 0.3, 0.38, 0.42, 0.44, 0.45}) {
+    SCOPED_TRACE(drop);
+    std::vector<Real> u(wiggle);
+    for (const auto& b : whole->blocks)
+      if (b.body == 1)
+        for (LocalIndex node : b.connectivity) u[3 * std::size_t(node) + 2] = wiggle[3 * std::size_t(node) + 2] - drop;
+    Vector uv(dofs->ownedMap());
+    {
+      auto h = uv.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (std::size_t lid = 0; lid < uv.getMap()->getNodeNumElements(); ++lid)
+        h(lid, 0) = u[std::size_t(uv.getMap()->getGlobalElement(LocalIndex(lid)))];
+    }
+    // the whole surfaces alone, scattered by mesh node (= global id)
+    std::vector<Real> x(whole->coords), fr(n, 0.0), Kr(n * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) x[i] += u[i];
+    std::vector<interaction::PairContribution> c;
+    alone->updatePairs(x);
+    alone->evaluate(x, c, true);
+    for (const auto& pc : c)
+      for (int a = 0; a < pc.numRowNodes; ++a)
+        for (int i = 0; i < 3; ++i) {
+          const std::size_t row = 3 * std::size_t(pc.rowNodes[a]) + std::size_t(i);
+          fr[row] += pc.f[3 * a + i];
+          for (int b = 0; b < pc.numColNodes; ++b)
+            for (int j = 0; j < 3; ++j)
+              Kr[row * n + 3 * std::size_t(pc.colNodes[b]) + std::size_t(j)] += pc.K[3 * a + i][3 * b + j];
+        }
+    full.updateInteractionGraph(uv);
+    const auto [fb, Kb] = gatherResidualAndTangent(bulk, uv, n);
+    const auto [ff, Kf] = gatherResidualAndTangent(full, uv, n);  // throws if the tangent left the graph
+    // against the largest entry of either part (the difference full - bulk rounds at the bulk's size)
+    Real fScale = 0.0, kScale = 0.0, fWorst = 0.0, kWorst = 0.0, fInteraction = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      fInteraction = std::max(fInteraction, std::abs(fr[i]));
+      fScale = std::max({fScale, std::abs(fr[i]), std::abs(fb[i])});
+      fWorst = std::max(fWorst, std::abs(ff[i] - fb[i] - fr[i]));
+    }
+    for (std::size_t k = 0; k < n * n; ++k) {
+      kScale = std::max({kScale, std::abs(Kr[k]), std::abs(Kb[k])});
+      kWorst = std::max(kWorst, std::abs(Kf[k] - Kb[k] - Kr[k]));
+    }
+    EXPECT_LE(fWorst, 1e-12 * fScale);
+    EXPECT_LE(kWorst, 1e-12 * kScale);
+    largest = std::max(largest, fInteraction / fScale);
+    long ghosts = held.numGhostFacets(), all = 0, gathers = held.numGathers();
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, ghosts, Teuchos::outArg(all));
+    if (comm->getSize() == 1) {
+      EXPECT_EQ(all, 0);
+      EXPECT_EQ(gathers, 0);
+    } else if (drop == 0.0) {
+      EXPECT_EQ(all, 0);  // 0.5 apart: no facet of the other body within the ghosts' radius
+      EXPECT_EQ(gathers, 1);
+    } else if (drop == 0.45) {
+      EXPECT_GT(ghosts, 0);
+      EXPECT_LT(ghosts, (upperFacets + lowerFacets) / 2);  // the facing sides and the sides' lower rows
+      EXPECT_GE(gathers, 3);
+    }
+    std::printf("[ghosts] gap %.2f: rank %d holds %ld ghost facets (%ld on all ranks), gathered %ld times; "
+                "interaction %.1e, |df| %.1e of %.1e, |dK| %.1e of %.1e\n",
+                0.5 - drop, comm->getRank(), ghosts, all, gathers, fInteraction, fWorst, fScale, kWorst, kScale);
+  }
+  EXPECT_GT(largest, 0.1);  // the bodies did interact at the end, with forces that matter beside the bulk's
+}
+
+// The surfaces a rank holds cover a reach only while the bodies have moved less than half of what the
+// ghosts' radius leaves beyond it; on one rank every facet is its own and they always do.
+TEST(GhostedSurfaces, CoverAReachUntilTheBodiesMoveTooFar) {
+  auto comm = Tpetra::getDefaultComm();
+  const auto whole = twoBoxes(0.3, 2);
+  const auto owners = partitionCells(*comm, *whole, CellPartition::Geometric);
+  const mesh::Mesh part = mesh::subdomain(*whole, owners, comm->getRank());
+  auto dofs = Teuchos::rcp(new DofMap(comm, part, 3, CellPartition::Subdomain));
+  GhostedSurfaces held(dofs, part, 1.0);
+  Vector u(dofs->ownedMap());
+  held.update(u);
+  const bool oneRank = comm->getSize() == 1;
+  EXPECT_EQ(held.covers(0.1), oneRank);  // no ghosts gathered yet
+  held.gather(u, comm->getRank() == 0 ? 0.4 : 0.3);  // the ranks ask for different radii: all hold the largest
+  EXPECT_EQ(held.radius(), oneRank ? std::numeric_limits<Real>::infinity() : 0.4);
+  EXPECT_TRUE(held.covers(0.4));
+  u.putScalar(0.03);  // every node moves by 0.03 sqrt(3) = 0.052
+  held.update(u);
+  EXPECT_TRUE(held.covers(0.29));
+  EXPECT_EQ(held.covers(0.3), oneRank);  // 0.3 + 2 x 0.052 > 0.4
+  EXPECT_THROW(held.gather(u, -1.0), std::logic_error) << "a negative radius";
 }
 
 TEST(DofMap, NodeIdsAreCheckedForRepeatsAndGaps) {

@@ -765,10 +765,10 @@ TEST(Mirror, RejectsNodesOnTheNegativeSide) {
 }
 
 }  // namespace
-// Three ranks' parts of a 4^3 box split in slabs along x: each has its cells with their nodes in
-// ascending global id and the whole surface; the parts' cells add up to the mesh, node sets are
-// restricted, and a facet's cell is the part's own or -1.
-TEST(Subdomain, HoldsItsCellsTheirNodesAndTheWholeSurface) {
+// A rank's subdomain holds its cells, the nodes they touch (no others) and the facets of its cells, in
+// the whole mesh's order: every facet of the whole surface is on exactly one rank. Node sets are
+// restricted.
+TEST(Subdomain, HoldsItsCellsTheirNodesAndTheirFacets) {
   BoxSpec spec;
   spec.nx = spec.ny = spec.nz = 4;
   const Mesh whole = box(spec);
@@ -779,6 +779,7 @@ TEST(Subdomain, HoldsItsCellsTheirNodesAndTheWholeSurface) {
     owner[std::size_t(c)] = x < 0.25 ? 0 : (x < 0.75 ? 1 : 2);
   }
   LocalIndex cells = 0;
+  std::vector<int> held(std::size_t(whole.surfaces[0].numFacets()), 0);  // per whole facet: the ranks holding it
   for (int rank = 0; rank < 3; ++rank) {
     SCOPED_TRACE(rank);
     const Mesh part = subdomain(whole, owner, rank);
@@ -787,31 +788,36 @@ TEST(Subdomain, HoldsItsCellsTheirNodesAndTheWholeSurface) {
     EXPECT_TRUE(std::is_sorted(part.nodeIds.begin(), part.nodeIds.end()));
     for (LocalIndex n = 0; n < part.numNodes(); ++n)
       for (int i = 0; i < 3; ++i) ASSERT_EQ(part.coord(n, i), whole.coord(LocalIndex(part.nodeIds[n]), i));
-    // the interior nodes (3 x 3 x 3) its cells do not touch are left out: the two planes x = 0.5, 0.75
-    // (or 0.25, 0.5) of 9 each at the ends, none in the middle slab
-    EXPECT_EQ(part.numNodes(), rank == 1 ? 125 : 125 - 18);
+    // the planes of nodes its cells touch: 2 of 5 x 5 at the ends, 3 in the middle slab
+    EXPECT_EQ(part.numNodes(), rank == 1 ? 75 : 50);
     ASSERT_EQ(part.nodeSets.size(), whole.nodeSets.size());
     for (LocalIndex n : part.nodeSet("xmin")) EXPECT_EQ(whole.coord(LocalIndex(part.nodeIds[n]), 0), 0.0);
-    EXPECT_EQ(part.nodeSet("xmin").size(), whole.nodeSet("xmin").size());  // all on the surface
+    EXPECT_EQ(part.nodeSet("xmin").size(), rank == 0 ? whole.nodeSet("xmin").size() : 0u);
     ASSERT_EQ(part.surfaces.size(), 1u);
     const auto& s = part.surfaces[0];
     const auto& w = whole.surfaces[0];
-    ASSERT_EQ(s.numFacets(), w.numFacets());
-    int own = 0;
-    for (LocalIndex f = 0; f < s.numFacets(); ++f) {
+    ASSERT_EQ(s.facetCells.size(), std::size_t(s.numFacets()));
+    LocalIndex f = 0;  // the part's facets, in the whole surface's order
+    for (LocalIndex g = 0; g < w.numFacets(); ++g) {
+      if (owner[std::size_t(w.facetCells[std::size_t(g)])] != rank) continue;
+      ASSERT_LT(f, s.numFacets());
       for (int a = 0; a < s.nodesPerFacet; ++a)
-        EXPECT_EQ(part.nodeIds[std::size_t(s.facets[std::size_t(f) * 4 + a])], w.facets[std::size_t(f) * 4 + a]);
+        EXPECT_EQ(part.nodeIds[std::size_t(s.facets[std::size_t(f) * 4 + a])], w.facets[std::size_t(g) * 4 + a]);
       const LocalIndex c = s.facetCells[std::size_t(f)];
-      EXPECT_EQ(c >= 0, owner[std::size_t(w.facetCells[std::size_t(f)])] == rank);
-      own += c >= 0;
+      ASSERT_GE(c, 0);
+      EXPECT_EQ(part.blocks[0].cellIds[std::size_t(c)], w.facetCells[std::size_t(g)]);
+      ++held[std::size_t(g)];
+      ++f;
     }
-    EXPECT_GT(own, 0);
+    EXPECT_EQ(f, s.numFacets());
+    EXPECT_GT(f, 0);
   }
   EXPECT_EQ(cells, whole.numCells());
+  EXPECT_EQ(std::count(held.begin(), held.end(), 1), std::ptrdiff_t(held.size()));
 }
 
 // A mesh sent to another rank (toBytes, meshFromBytes) arrives whole: a two-body mesh with node sets,
-// and a part with its node ids, cell ids and facets of other ranks' cells. A cut or padded buffer is
+// and a part with its node ids, cell ids and facets. A cut or padded buffer is
 // refused.
 TEST(Subdomain, MeshesTravelAsBytesUnchanged) {
   BoxSpec spec;

@@ -35,8 +35,6 @@ class ContactProbe {
   const mesh::Mesh& mesh_;
   assembly::Problem& problem_;
   LocalIndex upper_, lower_;
-  std::vector<LocalIndex> upperNodes_;  ///< the upper body's surface nodes, sorted
-  mesh::Surface lowerSurface_;           ///< the lower body's surface, as triangles in 3D
 };
 
 /// Turns converged states into load_curve.csv rows (flushed, so a run that

@@ -36,7 +36,9 @@ struct RunResult {
   std::string linearSolver;         ///< Solver/Linear Solver/Type, "auto" resolved
   std::size_t matrixRows = 0, matrixEntries = 0;  ///< size of the Jacobian at the end
   std::vector<double> peakMemoryMB;                 ///< per rank: the process's peak resident memory
-  std::vector<std::array<long, 3>> meshHeld;        ///< per rank: cells, nodes and surface facets of the mesh it holds
+  /// Per rank: cells and nodes of the mesh it holds, its own surface facets and the ghost facets it holds.
+  std::vector<std::array<long, 4>> meshHeld;
+  long surfaceGathers = 0;  ///< times the ghost facets were gathered (Method 3 on several ranks)
   std::string volumePairs;  ///< Method 1: its pair list and quadrature at the end (empty for Method 3)
   std::size_t numNodes = 0, numCells = 0, numDofs = 0;  ///< the problem's size
   std::size_t numSurfaceFacets = 0;                     ///< of the interacting surfaces, whole model (rank 0)

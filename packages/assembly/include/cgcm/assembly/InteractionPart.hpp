@@ -42,17 +42,25 @@ class InteractionPart {
   virtual double lastSearchSeconds() const = 0;
 
   /// The couplings (row node, column node) of every pair that can occur for
-  /// bodies within `radius` of each other at u, rows on this rank's overlap
-  /// map, sorted and unique. Collective.
-  virtual std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Vector& u, Real radius) = 0;
+  /// bodies within `radius` of each other at u: the row a mesh node on this
+  /// rank's overlap map, the column a global node id (it may be held by
+  /// another rank only); sorted and unique. Collective.
+  virtual std::vector<std::pair<LocalIndex, GlobalIndex>> couplings(const Vector& u, Real radius) = 0;
 
   /// Per body: the resultant of the interaction forces on it (x, y, z; z = 0
   /// in 2D) at the state of the last assemble, summed over ranks. Collective.
   virtual std::vector<std::array<Real, 3>> forces() const = 0;
 
-  /// Current coordinates (X + u), as a mesh-wide array (dim entries per
-  /// node), of every node the interaction reads; other nodes hold X. Collective.
-  virtual const std::vector<Real>& currentCoordinates(const Vector& u) = 0;
+  /// The bodies' surfaces this rank holds, at a state.
+  struct HeldSurfaces {
+    const std::vector<mesh::Surface>* surfaces = nullptr;  ///< one per body, node indices into coords
+    const std::vector<Real>* coords = nullptr;             ///< current coordinates X + u, dim per node
+    /// Per body: its leading facets that are this rank's own; the others are held because they lie
+    /// near the own ones (every facet within the interaction's reach of them is held).
+    std::vector<LocalIndex> ownFacets;
+  };
+  /// The surfaces held at u, for measurements on them (the contact probe). Collective.
+  virtual HeldSurfaces heldSurfaces(const Vector& u) = 0;
 
   /// The interaction force on each node at u, into `forces` (on the owned
   /// map): minus the part's own share of the residual, f_C, assembled alone

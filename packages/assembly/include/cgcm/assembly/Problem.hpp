@@ -101,10 +101,13 @@ class Problem {
   /// tangent entries outside the graph (it then threw GraphOutdatedError).
   bool graphOutdated() const { return graphOutdated_; }
   void clearGraphOutdated() { graphOutdated_ = false; }
-  /// Current coordinates (X + u) of every node the interaction reads (every
-  /// surface node at least), as a mesh-wide array (dim entries per node;
-  /// other nodes hold X). Collective; requires an interaction.
-  const std::vector<Real>& currentCoordinates(const Vector& u) { return interactionPart_->currentCoordinates(u); }
+  /// The bodies' surfaces this rank holds at u (InteractionPart::heldSurfaces).
+  /// Collective; requires an interaction.
+  InteractionPart::HeldSurfaces heldSurfaces(const Vector& u) { return interactionPart_->heldSurfaces(u); }
+  /// Method 3's part, or null (for the surfaces it holds, in the run's summary).
+  const SurfaceInteractionPart* surfaceInteractionPart() const {
+    return dynamic_cast<const SurfaceInteractionPart*>(interactionPart_.get());
+  }
   /// Per body: the interaction force on it at the state of the last
   /// evaluation (x, y, z), summed over ranks. Collective; empty without interaction.
   std::vector<std::array<Real, 3>> interactionForces() const;
@@ -135,9 +138,9 @@ class Problem {
   void buildGraph();
   void findCellNeighbours();
   /// The interaction couplings at u within `radius` (timed as `graph`).
-  std::vector<std::pair<LocalIndex, LocalIndex>> interactionCouplings(const Vector& u, Real radius);
+  std::vector<std::pair<LocalIndex, GlobalIndex>> interactionCouplings(const Vector& u, Real radius);
   /// Whether the graph holds `wanted` on every rank (collective).
-  bool graphHoldsEverywhere(const std::vector<std::pair<LocalIndex, LocalIndex>>& wanted) const;
+  bool graphHoldsEverywhere(const std::vector<std::pair<LocalIndex, GlobalIndex>>& wanted) const;
 
   Teuchos::RCP<const DofMap> dofs_;
   std::shared_ptr<const mesh::Mesh> mesh_;
@@ -146,7 +149,7 @@ class Problem {
   std::vector<BulkPart> bulk_;                         ///< one per body
   std::unique_ptr<InteractionPart> interactionPart_;  ///< null without interaction
 
-  std::vector<std::pair<LocalIndex, LocalIndex>> extraCouplings_;
+  std::vector<std::pair<LocalIndex, GlobalIndex>> extraCouplings_;  ///< (row mesh node, column global node)
   /// The part of the graph fixed with the mesh, found at the first build: per
   /// overlap node, the overlap nodes it shares one of this rank's cells with
   /// (sorted, unique), and a bound on the nodes other ranks' cells add to it.

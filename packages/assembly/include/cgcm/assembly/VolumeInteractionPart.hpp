@@ -33,16 +33,18 @@ class VolumeInteractionPart final : public InteractionPart {
   Real searchRadius() const override {
     return interaction_->cutoff() + searchRadiusFactor_ * interaction_->skin();
   }
-  const std::vector<Real>& currentCoordinates(const Vector& u) override { return coords_.update(u); }
+  /// The mesh's surfaces (every rank holds the whole mesh), all of them counted as own.
+  HeldSurfaces heldSurfaces(const Vector& u) override;
   Outcome assemble(const Vector& u, const VectorView& f, Matrix* J) override;
   /// Building the pair list (when it is rebuilt).
   double lastSearchSeconds() const override { return searchSeconds_; }
   /// Every node of a cell with every node of each cell of another body
   /// whose bounding box is within `radius`.
-  std::vector<std::pair<LocalIndex, LocalIndex>> couplings(const Vector& u, Real radius) override;
+  std::vector<std::pair<LocalIndex, GlobalIndex>> couplings(const Vector& u, Real radius) override;
   std::vector<std::array<Real, 3>> forces() const override;
 
  private:
+  const mesh::Mesh* mesh_;
   std::shared_ptr<interaction::VolumeInteraction> interaction_;
   Real searchRadiusFactor_;
   ReplicatedCoordinates coords_;

@@ -273,10 +273,28 @@ class SurfaceInteraction final : public Interaction {
   /// length scale; 0: closest segment only).
   Real projectionSmoothing() const { return smoothing_; }
 
+  /// Replaces the surfaces (one per body, as for the constructor; a body may
+  /// have none): the facets this rank holds changed (assembly::GhostedSurfaces).
+  /// Evaluated facets, reference configuration and pairs are reset; the next
+  /// updatePairs searches anew. Throws InputError as the constructor.
+  void setSurfaces(std::vector<mesh::Surface> surfaces);
+  /// How far from an evaluated quadrature point couplings(coords, radius)
+  /// reads the other bodies' facets (updatePairs and evaluate read less: the
+  /// same with radius = cutoff()), `deviation` the largest distance of a
+  /// curved facet from its search cover (largestCoverDeviation; 0 for flat
+  /// facets). A rank that holds every facet within this distance of its own
+  /// points gets the pairs and couplings of the whole surfaces.
+  Real readingReach(Real radius, Real deviation) const;
+  /// The most a point of a facet moves per unit motion of its nodes (1 for
+  /// flat facets; curved: the largest Lebesgue constant of the bodies' kinds).
+  Real lebesgue() const;
+  /// The largest distance of a curved facet from its search cover at `coords` (0: flat facets).
+  Real largestCoverDeviation(const Real* coords) const;
+
   /// Restricts the quadrature points searched by updatePairs and couplings to
   /// the facets f of body k with evaluated[k][f] != 0 (e.g. the facets whose
   /// cells this MPI rank owns: each rank then searches and pairs only its own
-  /// points, against every body's whole surface). Empty (the default): every
+  /// points, against every facet it holds). Empty (the default): every
   /// facet. Throws InputError unless there is one flag per facet of each body.
   void setEvaluatedFacets(std::vector<std::vector<char>> evaluated);
 
@@ -408,6 +426,8 @@ class SurfaceInteraction final : public Interaction {
     summary_.numVertexProjections = vertices(0);
   }
   void beginEvaluation();
+  /// How far beyond the nearest facet the projection blend and the curved candidates reach.
+  Real blendReach() const;
   /// Adds pair p's f (rows entries, dim per node) to the resultants, its state to the counts.
   void accumulate(const InteractionPair& p, const PairState& st, const Real* f, int rows, int dim);
   void findTargets(const Real* coords, const Real x[2], int l, Real rmin, InteractionPair& p);

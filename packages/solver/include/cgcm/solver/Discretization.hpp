@@ -66,7 +66,7 @@ Distribution distribute(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 /// whose p(0) is (u, gammaW, gammaL) with an interaction and (u) without.
 struct Discretization {
   /// The mesh this rank assembles: on several ranks its subdomain of the set-up's mesh (mesh::subdomain: its
-  /// cells, their nodes and the whole surfaces), except with Method 1, whose pairs need the whole mesh.
+  /// cells, their nodes and their surface facets), except with Method 1, whose pairs need the whole mesh.
   std::shared_ptr<const mesh::Mesh> mesh;
   Teuchos::RCP<assembly::DofMap> dofs;
   std::shared_ptr<assembly::Problem> problem;
