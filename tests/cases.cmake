@@ -11,7 +11,8 @@
 # name (<suite>_<case>), run (${out}/${name}, the output folder of cgcm_run),
 # out (build/tests/output/<suite>), outputs (build/tests/output: another
 # suite's runs), check (tests/tools/check_load_curve.py), compare_csv
-# (tests/tools/compare_csv.py), analytic (cgcm-analytic), quiet
+# (tests/tools/compare_csv.py), check_held (tests/tools/check_held_surfaces.py:
+# what each rank holds, from summary.txt), analytic (cgcm-analytic), quiet
 # (Output/Print Steps=false), CGCM_MPIEXEC (the MPI launcher).
 #
 # SANITIZE (every function): the test is also in the CI-sized subset that runs
@@ -197,6 +198,7 @@ function(cgcm_add_cases suite)
   set(out ${outputs}/${suite})
   set(check ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/tools/check_load_curve.py)
   set(compare_csv ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/tools/compare_csv.py)
+  set(check_held ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/tools/check_held_surfaces.py)
   set(analytic $<TARGET_FILE:cgcm-analytic>)
   set(quiet "Output/Print Steps=false")
   set(app_check ${CMAKE_SOURCE_DIR}/tests/unit/analytic/run_app_check.cmake)
