@@ -16,7 +16,7 @@ namespace cgcm::assembly {
 SurfaceInteractionPart::SurfaceInteractionPart(Teuchos::RCP<const DofMap> dofs, const mesh::Mesh& mesh,
                                                std::shared_ptr<interaction::SurfaceInteraction> interaction,
                                                Real searchRadiusFactor)
-    : InteractionPart(std::move(dofs)), mesh_(&mesh), dim_(dofs_->dofsPerNode()), interaction_(std::move(interaction)),
+    : InteractionPart(std::move(dofs)), dim_(dofs_->dofsPerNode()), interaction_(std::move(interaction)),
       searchRadiusFactor_(searchRadiusFactor), held_(dofs_, mesh, interaction_->lebesgue()) {
   if (!(searchRadiusFactor > 1.0))
     throw InputError("Interaction/Search Radius Factor = " + std::to_string(searchRadiusFactor) +

@@ -40,7 +40,6 @@ class GhostedSurfaces {
   LocalIndex numOwnFacets(int body) const { return numOwnFacets_[std::size_t(body)]; }
   /// Per body and held facet: 1 for the own facets.
   std::vector<std::vector<char>> ownFacetFlags() const;
-  LocalIndex numNodes() const { return LocalIndex(ids_.size()); }
   GlobalIndex globalNode(LocalIndex node) const { return ids_[std::size_t(node)]; }
   /// Reference coordinates of the held nodes (dim per node).
   const std::vector<Real>& referenceCoordinates() const { return reference_; }

@@ -63,7 +63,6 @@ class SurfaceInteractionPart final : public InteractionPart {
   std::vector<std::array<Real, 3>> forces() const override;
 
  private:
-  const mesh::Mesh* mesh_;
   int dim_;
   std::shared_ptr<interaction::SurfaceInteraction> interaction_;
   Real searchRadiusFactor_;
