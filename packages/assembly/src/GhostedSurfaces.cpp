@@ -84,6 +84,7 @@ GhostedSurfaces::GhostedSurfaces(Teuchos::RCP<const DofMap> dofs, const mesh::Me
         const auto [it, added] = held.emplace(dofs_->globalNode(n), LocalIndex(ids_.size()));
         if (added) {
           ids_.push_back(it->first);
+          ownMeshNodes_.push_back(n);
           for (int i = 0; i < dim_; ++i) reference_.push_back(mesh.coord(n, i));
         }
         own.facets.push_back(it->second);

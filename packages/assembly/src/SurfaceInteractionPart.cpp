@@ -112,7 +112,7 @@ std::vector<std::pair<LocalIndex, GlobalIndex>> SurfaceInteractionPart::coupling
   // rows: the nodes of this rank's facets, all on its overlap map; columns: any held node
   std::vector<std::pair<LocalIndex, GlobalIndex>> out;
   for (const auto& [row, column] : interaction_->couplings(x.data(), radius)) {
-    const LocalIndex meshRow = dofs_->meshNode(held_.globalNode(row));
+    const LocalIndex meshRow = held_.meshNode(row);
     if (meshRow < 0) throw std::logic_error("SurfaceInteractionPart: a coupling row off this rank's mesh");
     out.emplace_back(meshRow, held_.globalNode(column));
   }

@@ -16,7 +16,6 @@
 // box of another body within the radius of the facet's box. A facet's box is
 // its nodes' box, and for curved facets that box about its centre scaled by
 // the Lebesgue constant (a quadratic facet bulges beyond its nodes).
-#include <memory>
 #include <vector>
 
 #include "cgcm/assembly/DofMap.hpp"
@@ -41,6 +40,10 @@ class GhostedSurfaces {
   /// Per body and held facet: 1 for the own facets.
   std::vector<std::vector<char>> ownFacetFlags() const;
   GlobalIndex globalNode(LocalIndex node) const { return ids_[std::size_t(node)]; }
+  /// The mesh node of a held node of an own facet (-1 for a ghost's node).
+  LocalIndex meshNode(LocalIndex node) const {
+    return std::size_t(node) < ownMeshNodes_.size() ? ownMeshNodes_[std::size_t(node)] : -1;
+  }
   /// Reference coordinates of the held nodes (dim per node).
   const std::vector<Real>& referenceCoordinates() const { return reference_; }
 
@@ -75,6 +78,7 @@ class GhostedSurfaces {
   std::vector<LocalIndex> numOwnFacets_;
   LocalIndex numOwnNodes_ = 0;            ///< the own facets' nodes: the first held nodes
   std::vector<GlobalIndex> ids_;          ///< per held node
+  std::vector<LocalIndex> ownMeshNodes_;  ///< per own facets' node: its mesh node
   std::vector<Real> reference_, current_;  ///< dim per held node
   std::vector<Real> atGather_;            ///< the own nodes' coordinates at the last gather
   Real radius_ = -1.0;

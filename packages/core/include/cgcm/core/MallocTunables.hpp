@@ -75,7 +75,6 @@ inline void tuneMalloc(char** argv) {
 #endif
 }
 
-
 /// Whether glibc's malloc was told to use huge pages in this process (the
 /// tunable glibc.malloc.hugetlb set to 1 or 2, by tuneMalloc or by the
 /// caller's environment).
