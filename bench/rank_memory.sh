@@ -6,7 +6,8 @@
 #    kept in a mesh cache so that every run has the same mesh), its first two
 #    states, on 1, 2, 3 and 4 ranks (3 and 4 oversubscribe a 2-core machine:
 #    only the sizes count), and the same deck at lcContact = 0.2 as the empty
-#    run (libraries, MPI, gmsh);
+#    run (libraries, MPI, gmsh); results.e written, as by default (rank 0
+#    writes what the ranks stream to it);
 #  - on 2 ranks, glibc's moving mmap threshold (CGCM_MMAP_THRESHOLD=0)
 #    against cgcm's fixed 4 MiB;
 #  - on 2 ranks, five states, Preconditioner Reuse 0 against 3.
@@ -15,7 +16,7 @@ set -euo pipefail
 build=${1:-build}
 mpi="mpirun --allow-run-as-root --oversubscribe --mca mpi_yield_when_idle 1"
 out=output/bench-rank-memory
-deck=(inputs/3d/sphere-on-half-space.xml "Output/Print Steps=false" "Output/Exodus=false"
+deck=(inputs/3d/sphere-on-half-space.xml "Output/Print Steps=false"
       "Geometry/Gmsh Options/Mesh.Algorithm3D=10" "Geometry/Gmsh Options/General.NumThreads=2"
       "Geometry/Mesh Cache=$PWD/$out/mesh-cache")
 mkdir -p "$out/mesh-cache"

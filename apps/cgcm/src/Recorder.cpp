@@ -150,7 +150,7 @@ Recorder::Recorder(const solver::ProblemSetup& setup, const solver::Discretizati
       bodyCsv_ = open(dir + "/body_forces.csv", std::vector<std::string>{"step", "u", "body", "Fx", "Fy", "Fz"});
     });
   if (exodus)
-    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", setup.model.mesh.get(), disc, columns_,
+    results_ = std::make_unique<ResultsWriter>(dir + "/results.e", disc, columns_,
                                                resume ? resume->exodusSteps : -1, eigenvalues_ > 0);
 }
 

@@ -243,7 +243,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
 
   // Build: everything that can be rejected is checked before any work starts.
   const auto setupStart = std::chrono::steady_clock::now();
-  const solver::ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
+  solver::ProblemSetup setup = buildProblem(*comm, deck);  // rank 0 builds the mesh
   const double meshSeconds = secondsSince(setupStart);
   const solver::PathPlan plan = planOf(deck, setup);
   if (plan.branchSwitching() && out.get<int>("Eigenvalues") == 0)
@@ -261,6 +261,11 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   const auto distributionStart = std::chrono::steady_clock::now();
   const solver::Discretization disc = solver::discretize(comm, setup, linearSolverSettings);
   const double distributionSeconds = secondsSince(distributionStart);
+  std::size_t numSurfaceFacets = 0;
+  if (setup.model.mesh)
+    for (const auto& s : setup.model.mesh->surfaces) numSurfaceFacets += std::size_t(s.numFacets());
+  // Rank 0 lets the whole mesh go: from here on every rank holds its part alone (disc.mesh), results.e too.
+  setup.model.mesh.reset();
   const long numDofs = long(disc.dofs->ownedMap()->getGlobalNumElements());
   if (resume && long(resume->u.size()) != numDofs)
     throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
@@ -316,9 +321,9 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Summarise: minimum force, folds, jumps, hysteresis, cost (also when the run stopped).
   result.curve = recorder.curve;
   result.meshSeconds = meshSeconds, result.distributionSeconds = distributionSeconds;
+  result.resultsMeshSeconds = recorder.resultsMeshSeconds(), result.resultsSeconds = recorder.resultsStepSeconds();
   result.meshSource = setup.model.meshSource;
-  if (setup.model.mesh)
-    for (const auto& s : setup.model.mesh->surfaces) result.numSurfaceFacets += std::size_t(s.numFacets());
+  result.numSurfaceFacets = numSurfaceFacets;
   result.linearSolver = solver::resolvedLinearSolverType(linearSolverSettings, dim);
   measureCost(result, disc, newton, timingsBefore);
   if (root) writeSummary(dir + "/summary.txt", result, plan, printSteps ? &log : nullptr);

@@ -70,14 +70,17 @@ void writeSummary(const std::string& path, const RunResult& result, const solver
   both(buf);
   std::snprintf(buf, sizeof buf,
                 "wall time of the path %.3f s = bulk assembly %.3f s + interaction %.3f s (%s %.3f s) + matrix "
-                "graph (couplings and build) %.3f s + linear solves, NOX and LOCA %.3f s\n",
+                "graph (couplings and build) %.3f s + linear solves, NOX and LOCA %.3f s + results.e %.3f s\n",
                 result.pathSeconds, result.assemblySeconds, result.interactionSeconds,
                 result.volumePairs.empty() ? "closest-point search" : "pair lists", result.searchSeconds,
                 result.graphSeconds,
-                result.pathSeconds - result.assemblySeconds - result.interactionSeconds - result.graphSeconds);
+                result.pathSeconds - result.assemblySeconds - result.interactionSeconds - result.graphSeconds -
+                    result.resultsSeconds,
+                result.resultsSeconds);
   both(buf);
-  std::snprintf(buf, sizeof buf, "before the path: mesh and its checks %.3f s, distribution and set-up %.3f s\n",
-                result.meshSeconds, result.distributionSeconds);
+  std::snprintf(buf, sizeof buf,
+                "before the path: mesh and its checks %.3f s, distribution and set-up %.3f s, results.e's mesh %.3f s\n",
+                result.meshSeconds, result.distributionSeconds, result.resultsMeshSeconds);
   both(buf);
   if (!result.meshSource.empty()) both((result.meshSource + "\n").c_str());
   if (!result.peakMemoryMB.empty()) {

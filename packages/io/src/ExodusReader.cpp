@@ -58,7 +58,8 @@ ExodusReader::ExodusReader(const std::string& path) : path_(path) {
   for (const auto& [type, count] : setKinds) {
     auto& sets = type == EX_NODE_SET ? nodeSets_ : sideSets_;
     const std::vector<std::string> names = readNames(exoid_, type, count, false);
-    std::vector<int> ids(count);
+    std::vector<int>& ids = type == EX_NODE_SET ? nodeSetIds_ : sideSetIds_;
+    ids.resize(std::size_t(count));
     if (count > 0) ex_get_ids(exoid_, type, ids.data());
     for (int s = 0; s < count; ++s) {
       int n = 0, factors = 0;
@@ -90,6 +91,47 @@ int ExodusReader::index(const std::vector<std::string>& names, const std::string
   if (it == names.end())
     throw std::runtime_error("Exodus file \"" + path_ + "\" has no " + kind + " variable \"" + name + "\"");
   return int(it - names.begin()) + 1;
+}
+
+std::vector<double> ExodusReader::coordinates(int i) const {
+  if (i < 0 || i >= dim_) throw std::runtime_error("Exodus file \"" + path_ + "\": no coordinate " + std::to_string(i));
+  std::vector<double> c[3];
+  for (int k = 0; k < 3; ++k) c[k].resize(k == i ? std::size_t(numNodes_) : 0);
+  if (numNodes_ > 0 && ex_get_coord(exoid_, i == 0 ? c[0].data() : nullptr, i == 1 ? c[1].data() : nullptr,
+                                    i == 2 ? c[2].data() : nullptr) < 0)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": cannot read the coordinates");
+  return c[i];
+}
+
+std::vector<long long> ExodusReader::connectivity(std::size_t block) const {
+  char type[MAX_STR_LENGTH + 1] = {0};
+  int n = 0, perEntry = 0, edges = 0, faces = 0, attributes = 0;
+  if (block >= blocks_.size() ||
+      ex_get_block(exoid_, EX_ELEM_BLOCK, blockIds_[block], type, &n, &perEntry, &edges, &faces, &attributes) < 0)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": cannot read block " + std::to_string(block + 1));
+  std::vector<int> ids(std::size_t(n) * std::size_t(perEntry));
+  if (!ids.empty() && ex_get_conn(exoid_, EX_ELEM_BLOCK, blockIds_[block], ids.data(), nullptr, nullptr) < 0)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": cannot read the connectivity of block " +
+                             blocks_[block].name);
+  return std::vector<long long>(ids.begin(), ids.end());
+}
+
+std::vector<long long> ExodusReader::nodeSet(std::size_t set) const {
+  if (set >= nodeSets_.size()) throw std::runtime_error("Exodus file \"" + path_ + "\": no node set " + std::to_string(set + 1));
+  std::vector<int> ids(std::size_t(nodeSets_[set].size));
+  if (!ids.empty() && ex_get_set(exoid_, EX_NODE_SET, nodeSetIds_[set], ids.data(), nullptr) < 0)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": cannot read node set " + nodeSets_[set].name);
+  return std::vector<long long>(ids.begin(), ids.end());
+}
+
+std::vector<std::pair<long long, int>> ExodusReader::sideSet(std::size_t set) const {
+  if (set >= sideSets_.size()) throw std::runtime_error("Exodus file \"" + path_ + "\": no side set " + std::to_string(set + 1));
+  std::vector<int> elements(std::size_t(sideSets_[set].size)), sides(elements.size());
+  if (!elements.empty() && ex_get_set(exoid_, EX_SIDE_SET, sideSetIds_[set], elements.data(), sides.data()) < 0)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": cannot read side set " + sideSets_[set].name);
+  std::vector<std::pair<long long, int>> out;
+  for (std::size_t k = 0; k < elements.size(); ++k) out.emplace_back(elements[k], sides[k]);
+  return out;
 }
 
 std::vector<double> ExodusReader::globals(int step) const {
@@ -164,6 +206,30 @@ std::vector<std::string> commonNames(const char* kind, const std::vector<std::st
   return common;
 }
 
+// The meshes of two files with equal counts: coordinates within `tol`, the rest exactly.
+void compareMeshes(const ExodusReader& a, const ExodusReader& b, const ExodusTolerance& tol,
+                   std::vector<std::string>& out) {
+  for (int i = 0; i < a.dim(); ++i)
+    compareValues(std::string("coordinate ") + "xyz"[i], a.coordinates(i), b.coordinates(i), tol, out);
+  auto entities = [&](const char* kind, const std::vector<ExodusReader::Entity>& ea,
+                      const std::vector<ExodusReader::Entity>& eb) {
+    bool same = ea.size() == eb.size();
+    for (std::size_t k = 0; same && k < ea.size(); ++k)
+      same = ea[k].name == eb[k].name && ea[k].type == eb[k].type && ea[k].size == eb[k].size;
+    if (!same) out.push_back(std::string(kind) + " differ (names, types or sizes)");
+    return same;
+  };
+  if (entities("element blocks", a.blocks(), b.blocks()))
+    for (std::size_t k = 0; k < a.blocks().size(); ++k)
+      if (a.connectivity(k) != b.connectivity(k)) out.push_back("connectivity of block \"" + a.blocks()[k].name + "\" differs");
+  if (entities("node sets", a.nodeSets(), b.nodeSets()))
+    for (std::size_t k = 0; k < a.nodeSets().size(); ++k)
+      if (a.nodeSet(k) != b.nodeSet(k)) out.push_back("node set \"" + a.nodeSets()[k].name + "\" differs");
+  if (entities("side sets", a.sideSets(), b.sideSets()))
+    for (std::size_t k = 0; k < a.sideSets().size(); ++k)
+      if (a.sideSet(k) != b.sideSet(k)) out.push_back("side set \"" + a.sideSets()[k].name + "\" differs");
+}
+
 }  // namespace
 
 std::vector<std::string> compareExodus(const std::string& pathA, const std::string& pathB, const ExodusTolerance& tol) {
@@ -175,6 +241,7 @@ std::vector<std::string> compareExodus(const std::string& pathA, const std::stri
                   std::to_string(a.numElements()) + " vs " + std::to_string(b.numElements()));
     return out;
   }
+  compareMeshes(a, b, tol, out);
   if (a.numSteps() != b.numSteps())
     out.push_back("number of steps: " + std::to_string(a.numSteps()) + " vs " + std::to_string(b.numSteps()));
   const int steps = std::min(a.numSteps(), b.numSteps());

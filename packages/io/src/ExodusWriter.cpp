@@ -3,6 +3,7 @@
 #include <exodusII.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@ namespace cgcm::io {
 namespace {
 
 constexpr int kMaxNameLength = 64;  // Exodus' default is 32; ParaView reads longer names
+constexpr std::int64_t kMaxId = std::numeric_limits<int>::max();  // the file stores 32-bit ids
 
 std::string exodusMessage() {
   const char *msg = nullptr, *func = nullptr;
@@ -21,7 +23,21 @@ std::string exodusMessage() {
   return msg && *msg ? std::string(msg) : "Exodus error " + std::to_string(code);
 }
 
-// Exodus side (1-based) of `cell` whose nodes are `facet`, 0 if none.
+// 1-based 32-bit ids of 0-based ones
+std::vector<int> exodusIds(const GlobalIndex* ids, std::int64_t count) {
+  std::vector<int> out(static_cast<std::size_t>(count));
+  for (std::int64_t k = 0; k < count; ++k) out[std::size_t(k)] = int(ids[k] + 1);
+  return out;
+}
+
+}  // namespace
+
+std::int64_t ExodusLayout::numCells() const {
+  std::int64_t n = 0;
+  for (const auto& b : blocks) n += b.numCells;
+  return n;
+}
+
 int exodusSide(const mesh::ElementBlock& block, LocalIndex cell, const LocalIndex* facet, int nodesPerFacet) {
   const int npc = mesh::nodesPerCell(block.type);
   const LocalIndex* nodes = &block.connectivity[std::size_t(cell) * npc];
@@ -37,48 +53,61 @@ int exodusSide(const mesh::ElementBlock& block, LocalIndex cell, const LocalInde
   return 0;
 }
 
-}  // namespace
+std::string sideSetName(const std::vector<ExodusLayout::Block>& blocks, const std::vector<int>& blockBodies, int body) {
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (blockBodies[b] == body) return "contact:" + blocks[b].name;
+  return "contact:body " + std::to_string(body);
+}
+
+ExodusLayout layoutOf(const mesh::Mesh& mesh) {
+  ExodusLayout layout;
+  layout.dim = mesh.dim;
+  layout.numNodes = mesh.numNodes();
+  std::vector<int> bodies;
+  for (const auto& b : mesh.blocks) {
+    layout.blocks.push_back({b.name, b.type, b.numCells()});
+    bodies.push_back(b.body);
+  }
+  for (const auto& [name, nodes] : mesh.nodeSets) layout.nodeSets.push_back({name, std::int64_t(nodes.size())});
+  for (const auto& s : mesh.surfaces)
+    if (s.numFacets() > 0) layout.sideSets.push_back({sideSetName(layout.blocks, bodies, s.body), s.numFacets()});
+  return layout;
+}
+
+ExodusWriter::ExodusWriter(const std::string& path, const std::string& title, const ExodusLayout& layout,
+                           const ExodusVariables& variables)
+    : path_(path), names_(variables), layout_(layout) {
+  create(title);
+}
 
 ExodusWriter::ExodusWriter(const std::string& path, const std::string& title, const mesh::Mesh& mesh,
                            const ExodusVariables& variables)
-    : path_(path), names_(variables), numNodes_(std::size_t(mesh.numNodes())), numCells_(std::size_t(mesh.numCells())) {
-  for (const auto* kind : {&names_.nodal, &names_.element, &names_.global}) {
-    std::set<std::string> seen;
-    for (const auto& n : *kind) {
-      if (n.empty() || int(n.size()) > kMaxNameLength)
-        throw std::runtime_error("Exodus file \"" + path + "\": variable name \"" + n + "\" must have 1 to " +
-                                 std::to_string(kMaxNameLength) + " characters");
-      if (!seen.insert(n).second)
-        throw std::runtime_error("Exodus file \"" + path + "\": variable \"" + n + "\" declared twice");
-    }
-  }
-  if (mesh.blocks.empty()) throw std::runtime_error("Exodus file \"" + path + "\": the mesh has no element blocks");
-  if (mesh.dim != 2 && mesh.dim != 3)
-    throw std::runtime_error("Exodus file \"" + path + "\": mesh dimension " + std::to_string(mesh.dim));
-
-  int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
-  exoid_ = ex_create(path.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
-  if (exoid_ < 0) throw InputError("cannot create Exodus file \"" + path + "\": " + exodusMessage());
+    : path_(path), names_(variables), layout_(layoutOf(mesh)) {
+  create(title);
   try {
-    auto putNames = [this](ex_entity_type type, const std::vector<std::string>& names) {
-      std::vector<char*> ptrs;  // Exodus 6.02 takes char*[]
-      for (const auto& n : names) ptrs.push_back(const_cast<char*>(n.c_str()));
-      if (!ptrs.empty()) check(ex_put_names(exoid_, type, ptrs.data()), "names");
-    };
-    check(ex_set_max_name_length(exoid_, kMaxNameLength), "name length");
-
-    // Side sets: the bodies' surfaces, as (element, side) pairs.
-    std::vector<std::string> sideSetNames;
-    std::vector<std::vector<int>> sideElems, sideSides;
+    std::vector<double> xyz[3];
+    for (int i = 0; i < mesh.dim; ++i) {
+      xyz[i].resize(std::size_t(mesh.numNodes()));
+      for (LocalIndex n = 0; n < mesh.numNodes(); ++n) xyz[i][std::size_t(n)] = mesh.coord(n, i);
+    }
+    putCoordinates(0, mesh.numNodes(), xyz[0].data(), xyz[1].data(), mesh.dim == 3 ? xyz[2].data() : nullptr);
+    for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+      const auto& c = mesh.blocks[b].connectivity;
+      const std::vector<GlobalIndex> nodes(c.begin(), c.end());
+      putConnectivity(b, 0, mesh.blocks[b].numCells(), nodes.data());
+    }
+    std::size_t set = 0;
+    for (const auto& [name, nodes] : mesh.nodeSets) {
+      const std::vector<GlobalIndex> ids(nodes.begin(), nodes.end());
+      putNodeSet(set++, 0, std::int64_t(ids.size()), ids.data());
+    }
+    // side sets: the bodies' surfaces, as (element, side) pairs sorted by element, then side
     std::vector<LocalIndex> blockStart;
     for (std::size_t b = 0; b < mesh.blocks.size(); ++b) blockStart.push_back(mesh.firstCellOfBlock(b));
+    set = 0;
     for (const auto& s : mesh.surfaces) {
       if (s.numFacets() == 0) continue;
-      auto named =
-          std::find_if(mesh.blocks.begin(), mesh.blocks.end(), [&](const auto& b) { return b.body == s.body; });
-      sideSetNames.push_back("contact:" +
-                             (named != mesh.blocks.end() ? named->name : "body " + std::to_string(s.body)));
-      std::vector<int> elems, sides;
+      std::vector<std::pair<GlobalIndex, int>> pairs;
       for (LocalIndex f = 0; f < s.numFacets(); ++f) {
         const LocalIndex cell = s.facetCells[f];
         const std::size_t b = std::upper_bound(blockStart.begin(), blockStart.end(), cell) - blockStart.begin() - 1;
@@ -87,67 +116,87 @@ ExodusWriter::ExodusWriter(const std::string& path, const std::string& title, co
         if (side == 0)
           throw std::runtime_error("Exodus file \"" + path + "\": facet " + std::to_string(f) + " of body " +
                                    std::to_string(s.body) + " is no side of its cell " + std::to_string(cell));
-        elems.push_back(cell + 1);
-        sides.push_back(side);
+        pairs.emplace_back(cell, side);
       }
-      sideElems.push_back(std::move(elems));
-      sideSides.push_back(std::move(sides));
+      std::sort(pairs.begin(), pairs.end());
+      std::vector<GlobalIndex> elements;
+      std::vector<int> sides;
+      for (const auto& [e, side] : pairs) elements.push_back(e), sides.push_back(side);
+      putSideSet(set++, 0, std::int64_t(pairs.size()), elements.data(), sides.data());
     }
+    finishMesh();
+  } catch (...) {
+    ex_close(exoid_);
+    exoid_ = -1;
+    throw;
+  }
+}
 
-    check(ex_put_init(exoid_, title.c_str(), mesh.dim, mesh.numNodes(), mesh.numCells(), int(mesh.blocks.size()),
-                      int(mesh.nodeSets.size()), int(sideSetNames.size())),
+void ExodusWriter::create(const std::string& title) {
+  for (const auto* kind : {&names_.nodal, &names_.element, &names_.global}) {
+    std::set<std::string> seen;
+    for (const auto& n : *kind) {
+      if (n.empty() || int(n.size()) > kMaxNameLength)
+        throw std::runtime_error("Exodus file \"" + path_ + "\": variable name \"" + n + "\" must have 1 to " +
+                                 std::to_string(kMaxNameLength) + " characters");
+      if (!seen.insert(n).second)
+        throw std::runtime_error("Exodus file \"" + path_ + "\": variable \"" + n + "\" declared twice");
+    }
+  }
+  const ExodusLayout& l = layout_;
+  if (l.blocks.empty()) throw std::runtime_error("Exodus file \"" + path_ + "\": the mesh has no element blocks");
+  if (l.dim != 2 && l.dim != 3)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": mesh dimension " + std::to_string(l.dim));
+  if (l.numNodes > kMaxId || l.numCells() > kMaxId)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": " + std::to_string(l.numNodes) + " nodes and " +
+                             std::to_string(l.numCells()) + " cells; a file of 32-bit ids holds at most " +
+                             std::to_string(kMaxId) + " of each");
+
+  int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
+  exoid_ = ex_create(path_.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
+  if (exoid_ < 0) throw InputError("cannot create Exodus file \"" + path_ + "\": " + exodusMessage());
+  try {
+    auto putNames = [this](ex_entity_type type, const std::vector<std::string>& names) {
+      std::vector<char*> ptrs;  // Exodus 6.02 takes char*[]
+      for (const auto& n : names) ptrs.push_back(const_cast<char*>(n.c_str()));
+      if (!ptrs.empty()) check(ex_put_names(exoid_, type, ptrs.data()), "names");
+    };
+    check(ex_set_max_name_length(exoid_, kMaxNameLength), "name length");
+    check(ex_put_init(exoid_, title.c_str(), l.dim, l.numNodes, l.numCells(), int(l.blocks.size()),
+                      int(l.nodeSets.size()), int(l.sideSets.size())),
           "ex_put_init");
-
-    std::vector<double> xyz[3];
-    for (int i = 0; i < mesh.dim; ++i) {
-      xyz[i].resize(numNodes_);
-      for (LocalIndex n = 0; n < mesh.numNodes(); ++n) xyz[i][n] = mesh.coord(n, i);
-    }
-    check(ex_put_coord(exoid_, xyz[0].data(), xyz[1].data(), mesh.dim == 3 ? xyz[2].data() : nullptr), "coordinates");
     const char* coordNames[] = {"x", "y", "z"};
     check(ex_put_coord_names(exoid_, const_cast<char**>(coordNames)), "coordinate names");
-
-    std::vector<std::string> blockNames;
-    for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
-      const auto& block = mesh.blocks[b];
-      const int npc = mesh::nodesPerCell(block.type);
-      check(ex_put_block(exoid_, EX_ELEM_BLOCK, b + 1, mesh::cellTypeName(block.type), block.numCells(), npc, 0, 0, 0),
+    std::vector<std::string> names;
+    for (std::size_t b = 0; b < l.blocks.size(); ++b) {
+      const auto& block = l.blocks[b];
+      check(ex_put_block(exoid_, EX_ELEM_BLOCK, b + 1, mesh::cellTypeName(block.type), block.numCells,
+                         mesh::nodesPerCell(block.type), 0, 0, 0),
             "element block " + block.name);
-      std::vector<int> conn(block.connectivity.begin(), block.connectivity.end());
-      for (int& n : conn) ++n;
-      if (!conn.empty())
-        check(ex_put_conn(exoid_, EX_ELEM_BLOCK, b + 1, conn.data(), nullptr, nullptr), "connectivity");
-      blockNames.push_back(block.name);
-      blockCells_.push_back(std::size_t(block.numCells()));
+      names.push_back(block.name);
     }
-    putNames(EX_ELEM_BLOCK, blockNames);
-
-    std::vector<std::string> nodeSetNames;
-    int id = 0;
-    for (const auto& [name, nodes] : mesh.nodeSets) {
-      ++id;
-      check(ex_put_set_param(exoid_, EX_NODE_SET, id, int(nodes.size()), 0), "node set " + name);
-      std::vector<int> ones(nodes.begin(), nodes.end());
-      for (int& n : ones) ++n;
-      if (!ones.empty()) check(ex_put_set(exoid_, EX_NODE_SET, id, ones.data(), nullptr), "node set " + name);
-      nodeSetNames.push_back(name);
+    putNames(EX_ELEM_BLOCK, names);
+    names.clear();
+    for (std::size_t s = 0; s < l.nodeSets.size(); ++s) {
+      check(ex_put_set_param(exoid_, EX_NODE_SET, int(s) + 1, l.nodeSets[s].size, 0), "node set " + l.nodeSets[s].name);
+      names.push_back(l.nodeSets[s].name);
     }
-    putNames(EX_NODE_SET, nodeSetNames);
-
-    for (std::size_t s = 0; s < sideSetNames.size(); ++s) {
-      check(ex_put_set_param(exoid_, EX_SIDE_SET, int(s) + 1, int(sideElems[s].size()), 0), "side set");
-      check(ex_put_set(exoid_, EX_SIDE_SET, int(s) + 1, sideElems[s].data(), sideSides[s].data()), "side set");
+    putNames(EX_NODE_SET, names);
+    names.clear();
+    for (std::size_t s = 0; s < l.sideSets.size(); ++s) {
+      check(ex_put_set_param(exoid_, EX_SIDE_SET, int(s) + 1, l.sideSets[s].size, 0), "side set " + l.sideSets[s].name);
+      names.push_back(l.sideSets[s].name);
     }
-    putNames(EX_SIDE_SET, sideSetNames);
+    putNames(EX_SIDE_SET, names);
 
     const std::pair<ex_entity_type, const std::vector<std::string>*> kinds[] = {
         {EX_NODAL, &names_.nodal}, {EX_ELEM_BLOCK, &names_.element}, {EX_GLOBAL, &names_.global}};
-    for (const auto& [type, names] : kinds) {
-      if (names->empty()) continue;
-      check(ex_put_variable_param(exoid_, type, int(names->size())), "variable count");
+    for (const auto& [type, vars] : kinds) {
+      if (vars->empty()) continue;
+      check(ex_put_variable_param(exoid_, type, int(vars->size())), "variable count");
       std::vector<char*> ptrs;
-      for (const auto& n : *names) ptrs.push_back(const_cast<char*>(n.c_str()));
-      check(ex_put_variable_names(exoid_, type, int(names->size()), ptrs.data()), "variable names");
+      for (const auto& n : *vars) ptrs.push_back(const_cast<char*>(n.c_str()));
+      check(ex_put_variable_names(exoid_, type, int(vars->size()), ptrs.data()), "variable names");
     }
     check(ex_update(exoid_), "ex_update");
   } catch (...) {
@@ -157,10 +206,72 @@ ExodusWriter::ExodusWriter(const std::string& path, const std::string& title, co
   }
 }
 
-ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusVariables& variables,
+void ExodusWriter::checkRange(const char* what, std::int64_t first, std::int64_t count, std::int64_t size) const {
+  if (exoid_ < 0) throw std::runtime_error("Exodus file \"" + path_ + "\": written after close()");
+  if (first < 0 || count < 0 || first + count > size)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": " + what + " entries " + std::to_string(first) + " .. " +
+                             std::to_string(first + count - 1) + " outside 0 .. " + std::to_string(size - 1));
+}
+
+void ExodusWriter::putCoordinates(std::int64_t first, std::int64_t count, const double* x, const double* y,
+                                  const double* z) {
+  checkRange("coordinate", first, count, layout_.numNodes);
+  if (count == 0) return;
+  if (!x || !y || (layout_.dim == 3) != (z != nullptr))
+    throw std::logic_error("ExodusWriter::putCoordinates: " + std::to_string(layout_.dim) + " components needed");
+  check(ex_put_partial_coord(exoid_, first + 1, count, x, y, z), "coordinates");
+  meshEntries_ += count;
+}
+
+void ExodusWriter::putConnectivity(std::size_t block, std::int64_t first, std::int64_t count, const GlobalIndex* nodes) {
+  if (block >= layout_.blocks.size()) throw std::logic_error("ExodusWriter::putConnectivity: no block " + std::to_string(block));
+  const auto& b = layout_.blocks[block];
+  checkRange(("connectivity of block " + b.name).c_str(), first, count, b.numCells);
+  if (count == 0) return;
+  const int npc = mesh::nodesPerCell(b.type);
+  for (std::int64_t k = 0; k < count * npc; ++k)
+    if (nodes[k] < 0 || nodes[k] >= layout_.numNodes)
+      throw std::runtime_error("Exodus file \"" + path_ + "\": block " + b.name + " has node " +
+                               std::to_string(nodes[k]) + " of " + std::to_string(layout_.numNodes));
+  const std::vector<int> ids = exodusIds(nodes, count * npc);
+  check(ex_put_partial_elem_conn(exoid_, block + 1, first + 1, count, ids.data()), "connectivity of " + b.name);
+  meshEntries_ += count;
+}
+
+void ExodusWriter::putNodeSet(std::size_t set, std::int64_t first, std::int64_t count, const GlobalIndex* nodes) {
+  if (set >= layout_.nodeSets.size()) throw std::logic_error("ExodusWriter::putNodeSet: no set " + std::to_string(set));
+  checkRange(("node set " + layout_.nodeSets[set].name).c_str(), first, count, layout_.nodeSets[set].size);
+  if (count == 0) return;
+  const std::vector<int> ids = exodusIds(nodes, count);
+  check(ex_put_partial_set(exoid_, EX_NODE_SET, int(set) + 1, first + 1, count, ids.data(), nullptr),
+        "node set " + layout_.nodeSets[set].name);
+  meshEntries_ += count;
+}
+
+void ExodusWriter::putSideSet(std::size_t set, std::int64_t first, std::int64_t count, const GlobalIndex* elements,
+                              const int* sides) {
+  if (set >= layout_.sideSets.size()) throw std::logic_error("ExodusWriter::putSideSet: no set " + std::to_string(set));
+  checkRange(("side set " + layout_.sideSets[set].name).c_str(), first, count, layout_.sideSets[set].size);
+  if (count == 0) return;
+  const std::vector<int> ids = exodusIds(elements, count);
+  check(ex_put_partial_set(exoid_, EX_SIDE_SET, int(set) + 1, first + 1, count, ids.data(), sides),
+        "side set " + layout_.sideSets[set].name);
+  meshEntries_ += count;
+}
+
+void ExodusWriter::finishMesh() {
+  std::int64_t expected = layout_.numNodes + layout_.numCells();
+  for (const auto& s : layout_.nodeSets) expected += s.size;
+  for (const auto& s : layout_.sideSets) expected += s.size;
+  if (meshEntries_ != expected)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": " + std::to_string(meshEntries_) + " mesh entries put of " +
+                             std::to_string(expected) + " (coordinates, connectivity and sets)");
+  check(ex_update(exoid_), "ex_update");
+}
+
+ExodusWriter::ExodusWriter(const std::string& path, const ExodusLayout& layout, const ExodusVariables& variables,
                            int keptSteps)
-    : path_(path), steps_(keptSteps), names_(variables), numNodes_(std::size_t(mesh.numNodes())),
-      numCells_(std::size_t(mesh.numCells())) {
+    : path_(path), steps_(keptSteps), names_(variables), layout_(layout) {
   int cpuWordSize = sizeof(double), ioWordSize = 0;
   float version = 0.0f;
   exoid_ = ex_open(path.c_str(), EX_WRITE, &cpuWordSize, &ioWordSize, &version);
@@ -173,10 +284,16 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
   ex_set_max_name_length(exoid_, kMaxNameLength);
   ex_init_params init{};
   if (ex_get_init_ext(exoid_, &init) < 0) refuse(exodusMessage());
-  if (init.num_dim != mesh.dim || std::size_t(init.num_nodes) != numNodes_ || std::size_t(init.num_elem) != numCells_ ||
-      std::size_t(init.num_elem_blk) != mesh.blocks.size())
+  if (init.num_dim != layout.dim || init.num_nodes != layout.numNodes || init.num_elem != layout.numCells() ||
+      std::size_t(init.num_elem_blk) != layout.blocks.size())
     refuse("it holds another mesh");
-  for (const auto& b : mesh.blocks) blockCells_.push_back(std::size_t(b.numCells()));
+  for (std::size_t b = 0; b < layout.blocks.size(); ++b) {
+    char type[MAX_STR_LENGTH + 1] = {};
+    int64_t cells = 0, perCell = 0, edges = 0, faces = 0, attributes = 0;
+    if (ex_get_block(exoid_, EX_ELEM_BLOCK, b + 1, type, &cells, &perCell, &edges, &faces, &attributes) < 0 ||
+        cells != layout.blocks[b].numCells || std::string(type) != mesh::cellTypeName(layout.blocks[b].type))
+      refuse("it holds another mesh");
+  }
   const std::pair<ex_entity_type, const std::vector<std::string>*> kinds[] = {
       {EX_NODAL, &names_.nodal}, {EX_ELEM_BLOCK, &names_.element}, {EX_GLOBAL, &names_.global}};
   for (const auto& [type, names] : kinds) {
@@ -220,30 +337,72 @@ void ExodusWriter::checkFields(const char* kind, const std::vector<std::string>&
 
 void ExodusWriter::writeStep(double time, const Fields& nodal, const Fields& element, const Scalars& global) {
   if (exoid_ < 0) throw std::runtime_error("Exodus file \"" + path_ + "\": written after close()");
-  checkFields("nodal", names_.nodal, nodal, numNodes_);
-  checkFields("element", names_.element, element, numCells_);
+  checkFields("nodal", names_.nodal, nodal, std::size_t(layout_.numNodes));
+  checkFields("element", names_.element, element, std::size_t(layout_.numCells()));
+  checkGlobals(global);
+  beginStep(time);
+  for (std::size_t k = 0; k < names_.nodal.size(); ++k)
+    putNodal(k, 0, layout_.numNodes, nodal.at(names_.nodal[k]).data());
+  for (std::size_t k = 0; k < names_.element.size(); ++k) {
+    const double* values = element.at(names_.element[k]).data();
+    for (std::size_t b = 0; b < layout_.blocks.size(); values += layout_.blocks[b].numCells, ++b)
+      putElement(k, b, 0, layout_.blocks[b].numCells, values);
+  }
+  endStep(global);
+}
+
+void ExodusWriter::checkGlobals(const Scalars& global) const {
   Fields globals;
   for (const auto& [name, v] : global) globals[name] = {v};
   checkFields("global", names_.global, globals, 1);
+}
 
-  const int step = steps_ + 1;
-  check(ex_put_time(exoid_, step, &time), "time");
-  for (std::size_t k = 0; k < names_.nodal.size(); ++k)
-    check(ex_put_var(exoid_, step, EX_NODAL, int(k) + 1, 1, numNodes_, nodal.at(names_.nodal[k]).data()),
-          names_.nodal[k]);
-  for (std::size_t k = 0; k < names_.element.size(); ++k) {
-    const double* values = element.at(names_.element[k]).data();
-    for (std::size_t b = 0; b < blockCells_.size(); values += blockCells_[b], ++b)
-      if (blockCells_[b] > 0)
-        check(ex_put_var(exoid_, step, EX_ELEM_BLOCK, int(k) + 1, b + 1, blockCells_[b], values), names_.element[k]);
-  }
+void ExodusWriter::beginStep(double time) {
+  if (exoid_ < 0) throw std::runtime_error("Exodus file \"" + path_ + "\": written after close()");
+  if (inStep_) throw std::logic_error("ExodusWriter::beginStep: step " + std::to_string(steps_ + 1) + " not ended");
+  check(ex_put_time(exoid_, steps_ + 1, &time), "time");
+  inStep_ = true;
+  stepEntries_ = 0;
+}
+
+void ExodusWriter::putNodal(std::size_t variable, std::int64_t first, std::int64_t count, const double* values) {
+  if (!inStep_ || variable >= names_.nodal.size())
+    throw std::logic_error("ExodusWriter::putNodal: variable " + std::to_string(variable) + " outside a step");
+  checkRange(names_.nodal[variable].c_str(), first, count, layout_.numNodes);
+  if (count == 0) return;
+  check(ex_put_partial_var(exoid_, steps_ + 1, EX_NODAL, int(variable) + 1, 1, first + 1, count, values),
+        names_.nodal[variable]);
+  stepEntries_ += count;
+}
+
+void ExodusWriter::putElement(std::size_t variable, std::size_t block, std::int64_t first, std::int64_t count,
+                              const double* values) {
+  if (!inStep_ || variable >= names_.element.size() || block >= layout_.blocks.size())
+    throw std::logic_error("ExodusWriter::putElement: variable " + std::to_string(variable) + " of block " +
+                           std::to_string(block) + " outside a step");
+  checkRange(names_.element[variable].c_str(), first, count, layout_.blocks[block].numCells);
+  if (count == 0) return;
+  check(ex_put_partial_var(exoid_, steps_ + 1, EX_ELEM_BLOCK, int(variable) + 1, block + 1, first + 1, count, values),
+        names_.element[variable]);
+  stepEntries_ += count;
+}
+
+void ExodusWriter::endStep(const Scalars& global) {
+  if (!inStep_) throw std::logic_error("ExodusWriter::endStep: no step begun");
+  checkGlobals(global);
+  const std::int64_t expected =
+      layout_.numNodes * std::int64_t(names_.nodal.size()) + layout_.numCells() * std::int64_t(names_.element.size());
+  if (stepEntries_ != expected)
+    throw std::runtime_error("Exodus file \"" + path_ + "\": step " + std::to_string(steps_ + 1) + " has " +
+                             std::to_string(stepEntries_) + " field values of " + std::to_string(expected));
   if (!names_.global.empty()) {
     std::vector<double> values;
     for (const auto& name : names_.global) values.push_back(global.at(name));
-    check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 1, values.size(), values.data()), "global variables");
+    check(ex_put_var(exoid_, steps_ + 1, EX_GLOBAL, 1, 1, values.size(), values.data()), "global variables");
   }
   check(ex_update(exoid_), "ex_update");
-  steps_ = step;
+  inStep_ = false;
+  ++steps_;
 }
 
 void ExodusWriter::close() {

@@ -21,6 +21,8 @@
 #include "cgcm/app/Simulation.hpp"
 #include "cgcm/io/Deck.hpp"
 #include "cgcm/io/ExodusReader.hpp"
+#include "cgcm/solver/Discretization.hpp"
+#include "cgcm/solver/ModelEvaluator.hpp"
 
 namespace cgcm {
 namespace {
@@ -247,8 +249,58 @@ TEST(Results, MethodOneWritesTheInteractionTractionAndForce) {
               p[std::size_t(apex)], p[std::size_t(lowerApex)], interiorLoaded, sums);
 }
 
-// The fields are written by mesh node whatever global ids the nodes carry: a homogeneous stretch of a
-// block whose nodes have shuffled ids reads back node by node, with the homogeneous J in every cell.
+// Rank 0 receives the fields a window at a time: with windows of 1 kB (18 nodes or cells with their
+// fields, dozens of windows per array of this mesh) the file is the one written with the default window
+// (8 MiB: one window),
+// mesh and fields entry by entry, on one rank or two (mpi_app_tests_np2; mpi_*_results_np1_vs_np2
+// compare the files of one and two ranks).
+TEST(Results, FileIsTheSameWhateverTheWindowRankZeroReceives) {
+  const auto comm = Tpetra::getDefaultComm();
+  const std::string dir = std::string(CGCM_TEST_OUTPUT) + "/results-window";
+  auto d = io::readDeck(CGCM_DECK);
+  io::applyOverrides(*d, *app::validParameters(), {"Output/Directory=" + dir});
+  io::validateDeck(*d, *app::validParameters());
+  auto setup = app::buildProblem(*comm, *d);
+  const auto disc = solver::discretize(comm, setup, d->sublist("Solver").sublist("Linear Solver"));
+  // a smooth displacement field, the interaction evaluated at it (traction, force), a critical mode
+  assembly::Vector x(disc.dofs->ownedMap()), f(disc.dofs->ownedMap()), mode(disc.dofs->ownedMap());
+  {
+    auto hx = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto hm = mode.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    const auto& map = *disc.dofs->ownedMap();
+    for (std::size_t lid = 0; lid < map.getNodeNumElements(); ++lid) {
+      const GlobalIndex dof = map.getGlobalElement(LocalIndex(lid));
+      const LocalIndex n = disc.dofs->meshNodeOfDof(dof);
+      const int i = int(dof % 2);
+      hx(lid, 0) = 1e-3 * std::sin(3.0 * disc.mesh->coord(n, 0) + i) * std::cos(2.0 * disc.mesh->coord(n, 1));
+      hm(lid, 0) = std::cos(double(dof));
+    }
+  }
+  std::vector<Real> p = disc.model->parameters();
+  disc.model->evaluateUnconstrained(x, p, f);
+  std::filesystem::create_directories(dir);
+  for (const std::size_t bytes : {std::size_t(1024), solver::kRootStreamWindowBytes}) {
+    app::ResultsWriter writer(dir + "/window-" + std::to_string(bytes) + ".e", disc, {"u"}, -1, true, bytes);
+    writer.write(x, {0.5}, &mode);
+    writer.write(x, {0.75}, nullptr);  // no mode: zero
+  }
+  if (comm->getRank() != 0) return;
+  const std::string small = dir + "/window-1024.e", whole = dir + "/window-" + std::to_string(solver::kRootStreamWindowBytes) + ".e";
+  const auto differences = io::compareExodus(small, whole, {0.0, 0.0, {}});
+  EXPECT_TRUE(differences.empty()) << differences.front();
+  const io::ExodusReader r(small);
+  ASSERT_EQ(r.numSteps(), 2);
+  EXPECT_EQ(r.numNodes(), long(setup.numNodes));
+  EXPECT_EQ(r.numElements(), long(setup.numCells));
+  double largest = 0.0;  // the pressure is not all zero: the interaction was written
+  for (double v : r.nodal("pressure", 1)) largest = std::max(largest, std::abs(v));
+  EXPECT_GT(largest, 0.0);
+  for (double v : r.nodal("critical_mode_x", 2)) EXPECT_EQ(v, 0.0);
+}
+
+// The file numbers the nodes by global id (file node = id + 1), whatever the mesh's own order: a
+// homogeneous stretch of a block whose nodes carry reversed ids reads back node by node at the ids, the
+// coordinates and the cells relabelled with them, with the homogeneous J in every cell.
 TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
   // relabelled ids on a mesh every rank holds whole: one rank (several ranks assemble on parts, whose ids
   // are the whole mesh's)
@@ -274,7 +326,7 @@ TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
   }
   std::filesystem::create_directories(dir);
   {
-    app::ResultsWriter writer(dir + "/results.e", &mesh, disc, {"u"});
+    app::ResultsWriter writer(dir + "/results.e", disc, {"u"});
     writer.write(x, {0.0});
   }
   if (Tpetra::getDefaultComm()->getRank() != 0) return;
@@ -283,9 +335,17 @@ TEST(Results, FieldsFollowTheMeshNodesWhateverTheirIds) {
   const char* names[3] = {"displacement_x", "displacement_y", "displacement_z"};
   for (int i = 0; i < 3; ++i) {
     const auto u = r.nodal(names[i], 1);
-    for (LocalIndex n = 0; n < mesh.numNodes(); ++n)
-      ASSERT_NEAR(u[std::size_t(n)], stretch[i] * mesh.coord(n, i), 1e-15) << names[i] << " node " << n;
+    const auto x = r.coordinates(i);
+    for (LocalIndex n = 0; n < mesh.numNodes(); ++n) {
+      const auto id = std::size_t(mesh.globalNode(n));
+      ASSERT_EQ(x[id], mesh.coord(n, i)) << "node " << n;
+      ASSERT_NEAR(u[id], stretch[i] * mesh.coord(n, i), 1e-15) << names[i] << " node " << n;
+    }
   }
+  const auto cells = r.connectivity(0);
+  ASSERT_EQ(cells.size(), mesh.blocks[0].connectivity.size());
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    ASSERT_EQ(cells[k], mesh.globalNode(mesh.blocks[0].connectivity[k]) + 1) << "entry " << k;
   for (double J : r.element("J", 1)) EXPECT_NEAR(J, 1.01 * 1.02 * 0.97, 1e-13);
 }
 

@@ -7,11 +7,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 
 #include "cgcm/core/Error.hpp"
@@ -204,8 +206,12 @@ void checkFile(const std::string& path, const mesh::Mesh& m, const ExodusVariabl
     ASSERT_EQ(n, surface.numFacets());
     std::vector<int> elem(n), side(n);
     ASSERT_GE(ex_get_set(exoid, EX_SIDE_SET, s + 1, elem.data(), side.data()), 0);
-    for (int f = 0; f < n; ++f) {
-      EXPECT_EQ(elem[f], surface.facetCells[f] + 1);
+    // sorted by element, then side; each pair is the side of one facet of its cell, each facet's once
+    std::vector<std::pair<int, int>> pairs;
+    for (int k = 0; k < n; ++k) pairs.emplace_back(elem[k], side[k]);
+    EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end())) << "side set " << s;
+    std::vector<char> matched(std::size_t(n), 0);
+    for (int f = 0; f < n; ++f) {  // f: the pair
       int b = 0, local = elem[f] - 1;
       while (local >= int(conn[b].size() / mesh::nodesPerCell(m.blocks[b].type)))
         local -= int(conn[b].size() / mesh::nodesPerCell(m.blocks[b].type)), ++b;
@@ -213,10 +219,17 @@ void checkFile(const std::string& path, const mesh::Mesh& m, const ExodusVariabl
       const int* cell = &conn[b][std::size_t(local) * npc];
       const auto sides = exodusSides(types[b]);
       const auto& sn = sides.at(side[f] - 1);
-      std::set<int> sideNodes, facetNodes;
+      std::set<int> sideNodes;
       for (int a : sn) sideNodes.insert(cell[a - 1] - 1);
-      for (int a = 0; a < surface.nodesPerFacet; ++a) facetNodes.insert(surface.facets[f * surface.nodesPerFacet + a]);
-      EXPECT_EQ(sideNodes, facetNodes) << "side " << side[f] << " of element " << elem[f];
+      int facet = -1;
+      for (int g = 0; g < n && facet < 0; ++g) {
+        if (matched[std::size_t(g)] || surface.facetCells[g] + 1 != elem[f]) continue;
+        std::set<int> facetNodes;
+        for (int a = 0; a < surface.nodesPerFacet; ++a) facetNodes.insert(surface.facets[g * surface.nodesPerFacet + a]);
+        if (facetNodes == sideNodes) facet = g;
+      }
+      ASSERT_GE(facet, 0) << "side " << side[f] << " of element " << elem[f] << " is no facet of the surface";
+      matched[std::size_t(facet)] = 1;
       // outward: (facet centroid - cell centroid) . Exodus side normal > 0
       double fc[3] = {0, 0, 0}, cc[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
       auto x = [&](int localNode, int i) { return i < dim ? m.coord(cell[localNode - 1] - 1, i) : 0.0; };
@@ -281,6 +294,128 @@ TEST_F(Exodus, RoundTripOf2DAnd3DMeshes) {
     SCOPED_TRACE(path);
     checkFile(path, m, v, steps);
   }
+}
+
+// The streamed writer puts the arrays in pieces, in any order: pieces of 3 nodes and 2 cells from the
+// end backwards, the sets in pieces of 2, each step's fields in pieces of 4 and 3. The file is the one
+// the whole-mesh writer makes, entry by entry.
+TEST_F(Exodus, StreamedInPiecesIsTheFileWrittenWhole) {
+  int k = 0;
+  for (const mesh::Mesh& m : {twoRectangles(), hexAndTets(), quadraticRectangles(), quadraticBoxes()}) {
+    const ExodusVariables v = variablesFor(m.dim);
+    const std::string whole = file("whole-" + std::to_string(k) + ".e"), streamed = file("streamed-" + std::to_string(k++) + ".e");
+    SCOPED_TRACE(streamed);
+    const std::vector<StepValues> steps = {valuesAt(1, m, v), valuesAt(2, m, v)};
+    {
+      ExodusWriter w(whole, "round trip", m, v);
+      for (const auto& s : steps) write(w, s);
+    }
+    // pieces [first, first + count) of n entries, `size` at a time, from the end backwards
+    auto backwards = [](std::int64_t n, std::int64_t size, const std::function<void(std::int64_t, std::int64_t)>& put) {
+      for (std::int64_t end = n; end > 0; end -= size) put(std::max<std::int64_t>(0, end - size), std::min(size, end));
+    };
+    {
+      ExodusWriter w(streamed, "round trip", layoutOf(m), v);
+      backwards(m.numNodes(), 3, [&](std::int64_t first, std::int64_t count) {
+        std::vector<double> c[3];
+        for (int i = 0; i < m.dim; ++i)
+          for (std::int64_t n = first; n < first + count; ++n) c[i].push_back(m.coord(LocalIndex(n), i));
+        w.putCoordinates(first, count, c[0].data(), c[1].data(), m.dim == 3 ? c[2].data() : nullptr);
+      });
+      for (std::size_t b = 0; b < m.blocks.size(); ++b) {
+        const int npc = mesh::nodesPerCell(m.blocks[b].type);
+        const std::vector<GlobalIndex> nodes(m.blocks[b].connectivity.begin(), m.blocks[b].connectivity.end());
+        backwards(m.blocks[b].numCells(), 2, [&](std::int64_t first, std::int64_t count) {
+          w.putConnectivity(b, first, count, nodes.data() + first * npc);
+        });
+      }
+      std::size_t set = 0;
+      for (const auto& [name, members] : m.nodeSets) {
+        const std::vector<GlobalIndex> ids(members.begin(), members.end());
+        for (std::size_t first = 0; first < ids.size(); first += 2)
+          w.putNodeSet(set, std::int64_t(first), std::int64_t(std::min<std::size_t>(2, ids.size() - first)), ids.data() + first);
+        ++set;
+      }
+      set = 0;
+      for (const auto& surface : m.surfaces) {
+        std::vector<std::pair<GlobalIndex, int>> pairs;
+        for (LocalIndex f = 0; f < surface.numFacets(); ++f) {
+          LocalIndex cell = surface.facetCells[f];
+          std::size_t b = 0;
+          while (cell >= m.blocks[b].numCells()) cell -= m.blocks[b++].numCells();
+          pairs.emplace_back(surface.facetCells[f], exodusSide(m.blocks[b], cell, &surface.facets[std::size_t(f) * surface.nodesPerFacet],
+                                                               surface.nodesPerFacet));
+        }
+        std::sort(pairs.begin(), pairs.end());
+        std::vector<GlobalIndex> elements;
+        std::vector<int> sides;
+        for (const auto& [e, side] : pairs) elements.push_back(e), sides.push_back(side);
+        for (std::size_t first = 0; first < pairs.size(); first += 2)
+          w.putSideSet(set, std::int64_t(first), std::int64_t(std::min<std::size_t>(2, pairs.size() - first)),
+                       elements.data() + first, sides.data() + first);
+        ++set;
+      }
+      w.finishMesh();
+      for (const auto& s : steps) {
+        w.beginStep(s.time);
+        for (std::size_t k = 0; k < v.nodal.size(); ++k)
+          backwards(m.numNodes(), 4, [&](std::int64_t first, std::int64_t count) {
+            w.putNodal(k, first, count, s.nodal.at(v.nodal[k]).data() + first);
+          });
+        for (std::size_t k = 0; k < v.element.size(); ++k) {
+          std::int64_t blockStart = 0;
+          for (std::size_t b = 0; b < m.blocks.size(); blockStart += m.blocks[b++].numCells())
+            backwards(m.blocks[b].numCells(), 3, [&](std::int64_t first, std::int64_t count) {
+              w.putElement(k, b, first, count, s.element.at(v.element[k]).data() + blockStart + first);
+            });
+        }
+        w.endStep(s.global);
+      }
+      EXPECT_EQ(w.numSteps(), 2);
+    }
+    checkFile(streamed, m, v, steps);
+    const auto differences = compareExodus(whole, streamed, {0.0, 0.0, {}});
+    EXPECT_TRUE(differences.empty()) << differences.front();
+  }
+}
+
+// A streamed file refuses a piece outside its array, a mesh or a step with entries never put, a node id
+// beyond the mesh, a field put outside a step, and more nodes than 32-bit ids number.
+TEST_F(Exodus, StreamedFileRefusesPiecesOutsideAndHoles) {
+  const mesh::Mesh m = twoRectangles();
+  const ExodusVariables v = variablesFor(2);
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  ExodusWriter w(file("holes.e"), "t", layoutOf(m), v);
+  const std::vector<double> x(std::size_t(m.numNodes()), 0.0);
+  const LocalIndex n = m.numNodes();
+  EXPECT_NE(message([&] { w.putCoordinates(n - 1, 2, x.data(), x.data(), nullptr); })
+                .find("coordinate entries " + std::to_string(n - 1) + " .. " + std::to_string(n) + " outside 0 .. " +
+                      std::to_string(n - 1)),
+            std::string::npos);
+  w.putCoordinates(0, n - 1, x.data(), x.data(), nullptr);  // the last node missing
+  const std::vector<GlobalIndex> beyond(4, n);
+  EXPECT_NE(message([&] { w.putConnectivity(0, 0, 1, beyond.data()); }).find("has node " + std::to_string(n)),
+            std::string::npos);
+  const std::string hole = message([&] { w.finishMesh(); });
+  EXPECT_NE(hole.find("mesh entries put of"), std::string::npos) << hole;
+  EXPECT_NE(hole.find("holes.e"), std::string::npos) << hole;
+  EXPECT_THROW(w.putNodal(0, 0, 1, x.data()), std::logic_error);  // outside a step
+  w.beginStep(1.0);
+  EXPECT_THROW(w.beginStep(2.0), std::logic_error);
+  w.putNodal(0, 0, n, x.data());
+  const std::string missing = message([&] { w.endStep({{"u", 0.0}, {"P", 0.0}}); });
+  EXPECT_NE(missing.find("step 1 has " + std::to_string(n) + " field values of"), std::string::npos) << missing;
+
+  ExodusLayout huge = layoutOf(m);
+  huge.numNodes = std::int64_t(1) << 31;
+  EXPECT_NE(message([&] { ExodusWriter(file("huge.e"), "t", huge, v); }).find("32-bit ids"), std::string::npos);
 }
 
 TEST_F(Exodus, ContactSurfaceWithoutSymmetryFacetsIsASideSubset) {
@@ -405,6 +540,38 @@ TEST_F(Exodus, CompareFindsDifferencesByNameWithinTolerances) {
   const auto missing = compareExodus(file("a.e"), file("fewer.e"), {});
   ASSERT_EQ(missing.size(), 1u);
   EXPECT_NE(missing[0].find("element variable \"von_mises\" only in"), std::string::npos);
+}
+
+// The comparison reads the meshes too: a moved node (beyond the tolerance), a cell's nodes rotated, a
+// node set with another node.
+TEST_F(Exodus, CompareFindsMeshDifferences) {
+  const mesh::Mesh m = twoRectangles();
+  const ExodusVariables v = variablesFor(2);
+  mesh::Mesh moved = m, swapped = m, otherSet = m;
+  moved.coords[3] += 1e-6;
+  // the first cell of "upper" with its nodes rotated: the same cell, other sides (its side set pairs change too)
+  std::rotate(swapped.blocks[1].connectivity.begin(), swapped.blocks[1].connectivity.begin() + 1,
+              swapped.blocks[1].connectivity.begin() + 4);
+  otherSet.nodeSets.begin()->second.back() = otherSet.nodeSets.begin()->second.back() == 0 ? 1 : 0;
+  std::sort(otherSet.nodeSets.begin()->second.begin(), otherSet.nodeSets.begin()->second.end());
+  auto writeFile = [&](const std::string& name, const mesh::Mesh& mesh) {
+    ExodusWriter w(file(name), "t", mesh, v);
+    write(w, valuesAt(1, m, v));
+  };
+  writeFile("a.e", m);
+  writeFile("moved.e", moved);
+  writeFile("swapped.e", swapped);
+  writeFile("set.e", otherSet);
+  auto differences = [&](const char* name) { return compareExodus(file("a.e"), file(name), {}); };
+  const auto moving = differences("moved.e"), rotated = differences("swapped.e"), set = differences("set.e");
+  ASSERT_EQ(moving.size(), 1u);
+  EXPECT_NE(moving[0].find("coordinate y"), std::string::npos) << moving[0];  // entry 3: node 1, y
+  ASSERT_EQ(rotated.size(), 2u);
+  EXPECT_EQ(rotated[0], "connectivity of block \"upper\" differs");
+  EXPECT_EQ(rotated[1], "side set \"contact:upper\" differs");
+  ASSERT_EQ(set.size(), 1u);
+  EXPECT_EQ(set[0], "node set \"" + m.nodeSets.begin()->first + "\" differs");
+  EXPECT_TRUE(compareExodus(file("a.e"), file("moved.e"), {1e-5, 0.0, {}}).empty());  // within the tolerance
 }
 
 TEST_F(Exodus, ExoCompareToolExitCodesAndDump) {

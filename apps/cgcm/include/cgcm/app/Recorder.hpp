@@ -54,6 +54,9 @@ class Recorder {
 
   /// Steps in results.e so far (rank 0; 0 without Exodus output).
   int exodusSteps() const { return results_ ? results_->numSteps() : 0; }
+  /// Wall time of results.e: its mesh (before the path), its steps (0 without the file).
+  double resultsMeshSeconds() const { return results_ ? results_->meshSeconds() : 0.0; }
+  double resultsStepSeconds() const { return results_ ? results_->stepSeconds() : 0.0; }
 
   /// Records an accepted state of the path (its step, flags and solver figures with it). Collective.
   void record(const solver::PathState& state);

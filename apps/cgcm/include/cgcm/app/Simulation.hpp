@@ -27,6 +27,8 @@ struct RunResult {
   double pathSeconds = 0.0;         ///< the whole path, failed attempts included
   double meshSeconds = 0.0;         ///< building the problem: the mesh (gmsh, generators) and its checks
   double distributionSeconds = 0.0;  ///< partition, each rank's subdomain, dofs, problem and solver set-up
+  double resultsMeshSeconds = 0.0;   ///< results.e: writing its mesh (before the path)
+  double resultsSeconds = 0.0;       ///< results.e: writing its steps (in the path)
   std::string meshSource;            ///< how the mesh was obtained (mesh::Model::meshSource)
   int continuationSteps = 0;        ///< arc-length steps (arc-length control, jumps, parameter continuation)
   int graphRestarts = 0;            ///< continuation restarts after graph rebuilds

@@ -2,6 +2,7 @@
 // Reading Exodus II results back: what tests and tools/exo_compare need
 // (Debian has no SEACAS exodiff). Variables are looked up by name.
 #include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,14 @@ class ExodusReader {
   const std::vector<double>& times() const { return times_; }
   int numSteps() const { return int(times_.size()); }
 
+  /// The mesh: coordinate i of every node; the 1-based node ids of block b's cells; the 1-based node
+  /// ids of node set s; the (1-based element, side) pairs of side set s. Throws std::runtime_error
+  /// naming the file if Exodus cannot read them.
+  std::vector<double> coordinates(int i) const;
+  std::vector<long long> connectivity(std::size_t block) const;
+  std::vector<long long> nodeSet(std::size_t set) const;
+  std::vector<std::pair<long long, int>> sideSet(std::size_t set) const;
+
   /// Values at `step` (1-based, as Exodus counts). Throws std::runtime_error
   /// naming the file and the variable if the name or the step is unknown.
   std::vector<double> globals(int step) const;  ///< in globalNames() order
@@ -50,7 +59,7 @@ class ExodusReader {
   int dim_ = 0;
   long long numNodes_ = 0, numElements_ = 0;
   std::vector<Entity> blocks_, nodeSets_, sideSets_;
-  std::vector<int> blockIds_;
+  std::vector<int> blockIds_, nodeSetIds_, sideSetIds_;
   std::vector<std::string> nodalNames_, elementNames_, globalNames_;
   std::vector<double> times_;
 };
@@ -68,9 +77,10 @@ struct ExodusTolerance {
   }
 };
 
-/// Compares two Exodus files: dimension, number of nodes and elements, number
-/// of steps, time values, and every global, nodal and element variable by
-/// name at every step. Returns one line per difference (the worst entry of
+/// Compares two Exodus files: dimension, number of nodes and elements; the
+/// mesh (coordinates within the tolerance; blocks, their connectivity, node
+/// and side sets exactly); number of steps, time values, and every global,
+/// nodal and element variable by name at every step. Returns one line per difference (the worst entry of
 /// each variable); empty if the files agree. Throws InputError if a file
 /// cannot be read.
 std::vector<std::string> compareExodus(const std::string& a, const std::string& b, const ExodusTolerance& tol);
