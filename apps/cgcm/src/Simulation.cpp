@@ -29,7 +29,6 @@ namespace cgcm::app {
 
 using assembly::Vector;
 using solver::Checkpoint;
-using solver::RootGather;
 
 namespace {
 
@@ -57,23 +56,22 @@ void prepareOutput(const Teuchos::Comm<int>& comm, const Teuchos::ParameterList&
 }
 
 // checkpoint.bin after every accepted state of a displacement-controlled path
-// (collective: the vectors are gathered on rank 0).
-solver::LoadStepper::CheckpointSink checkpointSink(const std::string& dir, const Recorder& recorder,
-                                                  RootGather& gather, const Real& lastDisplacement, bool root) {
+// (collective: the ranks stream the vectors to rank 0 as it writes).
+solver::LoadStepper::CheckpointSink checkpointSink(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                                  const std::string& dir, const Recorder& recorder,
+                                                  const Real& lastDisplacement, bool root) {
   auto failed = std::make_shared<bool>(false);
-  return [&recorder, &gather, &lastDisplacement, dir, root, failed](const solver::StepperState& s, const Vector& state,
-                                                           const Vector& before) {
+  return [comm, &recorder, &lastDisplacement, dir, root, failed](const solver::StepperState& s, const Vector& state,
+                                                                 const Vector& before) {
     Checkpoint c;
     c.stepper = s;
     c.lastDisplacement = lastDisplacement;
     c.exodusSteps = recorder.exodusSteps();
-    c.u = gather.gather(state);
-    if (s.havePrevious) c.previous = gather.gather(before);
-    if (!root) return;
     c.curve = recorder.curve;
-    if (!solver::writeCheckpoint(dir, c) && !*failed) {
+    if (!solver::writeCheckpoint(*comm, dir, c, state, s.havePrevious ? &before : nullptr) && !*failed) {
       *failed = true;
-      std::cerr << "cgcm: warning: cannot write " << solver::checkpointPath(dir) << "; the run goes on without\n";
+      if (root)
+        std::cerr << "cgcm: warning: cannot write " << solver::checkpointPath(dir) << "; the run goes on without\n";
     }
   };
 }
@@ -165,7 +163,7 @@ std::optional<Checkpoint> resumeOf(RunMode mode, const solver::PathPlan& plan, c
     throw InputError("--restart " + dir + ": only runs under displacement control can be continued "
                      "(Loading/Control = \"displacement\" and Continuation Parameter = \"u\")");
   try {
-    return solver::readCheckpoint(dir);
+    return solver::readCheckpointHeader(dir);  // the vectors later, into the ranks' parts (initialGuess)
   } catch (const solver::MissingCheckpoint& e) {
     throw InputError("--restart " + dir + ": " + e.what() +
                      ": the run recorded no state, or Output/Checkpoint was false");
@@ -217,12 +215,11 @@ void logStart(std::ostream& log, const solver::ProblemSetup& setup, const solver
 }
 
 // The initial guess: the prescribed motion of whole bodies at the first u (a
-// restart: the checkpoint's state, and the one before it in `previous`).
+// restart: the checkpoint's state of `dir`, and the one before it in `previous`).
 void initialGuess(const solver::ProblemSetup& setup, const solver::Discretization& disc, const solver::PathPlan& plan,
-                  const Checkpoint* resume, RootGather& gather, Vector& u, Vector& previous) {
+                  const Checkpoint* resume, const std::string& dir, Vector& u, Vector& previous) {
   if (resume) {
-    gather.scatter(resume->u, u);
-    if (resume->stepper.havePrevious) gather.scatter(resume->previous, previous);
+    solver::readCheckpointVectors(dir, u, resume->stepper.havePrevious ? &previous : nullptr);
   } else if (!setup.model.initialMotion.empty()) {
     assembly::DirichletConditions motion(disc.dofs);
     for (const auto& c : setup.model.initialMotion)
@@ -267,8 +264,8 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   // Rank 0 lets the whole mesh go: from here on every rank holds its part alone (disc.mesh), results.e too.
   setup.model.mesh.reset();
   const long numDofs = long(disc.dofs->ownedMap()->getGlobalNumElements());
-  if (resume && long(resume->u.size()) != numDofs)
-    throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->u.size()) +
+  if (resume && long(resume->unknowns) != numDofs)
+    throw InputError("--restart " + dir + ": the checkpoint holds " + std::to_string(resume->unknowns) +
                      " unknowns, the deck's problem " + std::to_string(numDofs) +
                      " (parameters.xml or the mesh changed since)");
   const auto& model = disc.model;
@@ -282,8 +279,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   if (setup.model.contact) probe = std::make_unique<ContactProbe>(*setup.model.contact, *disc.mesh, *disc.problem);
   if (root && printSteps) logStart(log, setup, plan, numDofs, comm->getSize(), newtonSettings);
   Vector u(model->map()), previous(model->map());
-  RootGather gather(disc.dofs->ownedMap());
-  initialGuess(setup, disc, plan, resume ? &*resume : nullptr, gather, u, previous);
+  initialGuess(setup, disc, plan, resume ? &*resume : nullptr, dir, u, previous);
   if (plan.usesContinuation()) continuation.validate(u);  // LOCA reads its list: typos stop here
   RunResult result;
   result.numNodes = setup.numNodes, result.numCells = setup.numCells, result.numDofs = std::size_t(numDofs);
@@ -298,7 +294,7 @@ RunResult runSimulation(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, cons
   Real lastDisplacement = resume ? resume->lastDisplacement : plan.path().path.front();  // of the last state that was no fold
   solver::PathContext context = pathContext(disc, newton, continuation, resume, previous);
   if (eigenvalues > 0) context.spectrum = std::make_shared<solver::TangentSpectrum>(model, eigenvalues);
-  if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(dir, recorder, gather, lastDisplacement, root);
+  if (out.get<bool>("Checkpoint")) context.checkpoint = checkpointSink(comm, dir, recorder, lastDisplacement, root);
   if (probe) context.continuity = continuityCheck(*probe, *model, lastDisplacement, 0.05 * setup.interaction->potential->r0());
   const auto runStart = std::chrono::steady_clock::now();
   const assembly::AssemblyTimings timingsBefore = disc.problem->timings();

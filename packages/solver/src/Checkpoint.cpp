@@ -1,13 +1,18 @@
 #include "cgcm/solver/Checkpoint.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <boost/crc.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <functional>
+#include <memory>
 #include <sstream>
+
+#include "cgcm/solver/RootStream.hpp"
 
 namespace cgcm::solver {
 
@@ -36,22 +41,9 @@ template <class T>
 void get(std::istream& in, T& v) {
   in.read(reinterpret_cast<char*>(&v), sizeof v);
 }
-void putVector(std::ostream& out, const std::vector<Real>& v) {
-  put(out, std::uint64_t(v.size()));
-  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(Real)));
-}
-// false if the count is impossible or the data run out
-bool getVector(std::istream& in, std::vector<Real>& v, std::uint64_t limit) {
-  std::uint64_t n = 0;
-  get(in, n);
-  if (!in || n > limit) return false;
-  v.resize(n);
-  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(Real)));
-  return bool(in);
-}
-
-// The fields of format 2 after its magic, up to and with the end mark.
-std::string fields(const Checkpoint& c) {
+// The fields of format 2 after its magic up to the vectors: the stepper, the continuity check's u, the
+// Exodus steps, the curve.
+std::string headerFields(const Checkpoint& c) {
   std::ostringstream out(std::ios::binary);
   const auto& s = c.stepper;
   put(out, std::uint64_t(s.segment));
@@ -70,15 +62,11 @@ std::string fields(const Checkpoint& c) {
     put(out, std::int32_t(p.cutbacks));
     put(out, std::uint8_t(p.stable | (p.fold << 1) | (p.jump << 2) | (p.branchPoint << 3)));
   }
-  putVector(out, c.u);
-  putVector(out, c.previous);
-  out.write(kEnd, sizeof kEnd);
   return out.str();
 }
 
-// The fields back from `in` (the bytes between the magic and the checksum);
-// false if they do not fit together.
-bool parseFields(std::istream& in, std::uint64_t size, Checkpoint& c) {
+// The header fields back from `in`; false if they do not fit together (more rows than `size` bytes).
+bool parseHeader(std::istream& in, std::uint64_t size, Checkpoint& c) {
   std::uint64_t segment = 0, rows = 0;
   std::int32_t step = 0, exodusSteps = 0;
   std::uint8_t havePrevious = 0;
@@ -113,11 +101,140 @@ bool parseFields(std::istream& in, std::uint64_t size, Checkpoint& c) {
     p.jump = (flags >> 2) & 1;
     p.branchPoint = (flags >> 3) & 1;
   }
-  if (!in) return false;
-  if (!getVector(in, c.u, size / sizeof(Real)) || !getVector(in, c.previous, size / sizeof(Real))) return false;
+  return bool(in);
+}
+
+// Writes through a temporary file, the CRC-32 of every byte kept as it goes; commit() appends the CRC
+// and renames the file into place.
+class ChecksummedFile {
+ public:
+  explicit ChecksummedFile(const std::string& path)
+      : path_(path), temporary_(path + ".tmp"), out_(temporary_, std::ios::binary | std::ios::trunc) {}
+  void write(const void* data, std::size_t size) {
+    out_.write(static_cast<const char*>(data), std::streamsize(size));
+    crc_.process_bytes(data, size);
+  }
+  template <class T>
+  void write(const T& v) {
+    write(&v, sizeof v);
+  }
+  bool commit() {
+    const Checksum crc = Checksum(crc_.checksum());
+    put(out_, crc);
+    out_.flush();
+    out_.close();
+    if (!out_) return false;
+    std::error_code ec;
+    std::filesystem::rename(temporary_, path_, ec);
+    return !ec;
+  }
+
+ private:
+  std::string path_, temporary_;
+  std::ofstream out_;
+  boost::crc_32_type crc_;
+};
+
+void writeStart(ChecksummedFile& file, const Checkpoint& c) {
+  file.write(kMagicStem, sizeof kMagicStem);
+  file.write(kVersion);
+  const std::string header = headerFields(c);
+  file.write(header.data(), header.size());
+}
+
+// Values of the file's vectors as they are read: vector 0 (u) or 1 (previous), entries [first, first + count).
+using VectorSink = std::function<void(int vector, std::uint64_t first, const Real* values, std::size_t count)>;
+
+// The checkpoint file at `path`, checked whole before any field is read: its format, its size and its
+// checksum, a window of bytes at a time. Throws MissingCheckpoint or InputError (as readCheckpoint).
+// Returns the file's size.
+std::uint64_t checkedFile(const std::string& path, std::size_t windowBytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MissingCheckpoint("no checkpoint (" + path + ")");
+  in.seekg(0, std::ios::end);
+  const std::uint64_t size = std::uint64_t(in.tellg());
+  in.seekg(0);
+  if (in.bad() || !in) throw InputError("cannot read " + path);
+  constexpr std::size_t header = sizeof kMagicStem + 1;
+  char start[header] = {};
+  in.read(start, std::streamsize(std::min<std::uint64_t>(size, header)));
+  const bool cgcm = size >= header && std::memcmp(start, kMagicStem, sizeof kMagicStem) == 0;
+  const char version = cgcm ? start[sizeof kMagicStem] : 0;
+  auto lastBytes = [&](char* out, std::size_t n) {
+    in.clear();
+    in.seekg(std::streamoff(size - n));
+    in.read(out, std::streamsize(n));
+  };
+  // format 1: no checksum, the end mark last
+  if (version == '1' && size >= header + sizeof kEnd) {
+    char end[sizeof kEnd];
+    lastBytes(end, sizeof end);
+    if (std::memcmp(end, kEnd, sizeof kEnd) == 0)
+      throw InputError(path + " is a checkpoint of format 1, written by an older cgcm; this cgcm reads format " +
+                       kVersion + ": run the deck again from the start");
+  }
+  if (size < header + sizeof(Checksum))
+    throw InputError(path + " is damaged or not a cgcm checkpoint (" + std::to_string(size) +
+                     " bytes: too short for one)");
+  Checksum stored = 0;
+  lastBytes(reinterpret_cast<char*>(&stored), sizeof stored);
+  const std::uint64_t body = size - sizeof(Checksum);
+  boost::crc_32_type crc;
+  std::vector<char> window(std::max<std::size_t>(1, windowBytes));
+  in.clear();
+  in.seekg(0);
+  for (std::uint64_t done = 0; done < body;) {
+    const std::size_t n = std::size_t(std::min<std::uint64_t>(window.size(), body - done));
+    in.read(window.data(), std::streamsize(n));
+    if (!in) throw InputError("cannot read " + path);
+    crc.process_bytes(window.data(), n);
+    done += n;
+  }
+  if (Checksum(crc.checksum()) != stored)
+    throw InputError(path + " is damaged: its checksum (CRC-32) does not match its contents (the file was cut "
+                     "or changed after cgcm wrote it, or it is not a cgcm checkpoint)");
+  if (!cgcm) throw InputError(path + " is not a cgcm checkpoint");
+  // a later format that keeps the checksum at the end
+  if (version != kVersion)
+    throw InputError(path + " is a checkpoint of format " + version + ", written by a newer cgcm; this cgcm reads "
+                     "format " + kVersion);
+  return size;
+}
+
+// Reads a checked file's fields: the header into `c`, the vectors' lengths into c.unknowns (u) and
+// `previousLength`, their values to `sink` a window at a time (skipped without a sink). Throws InputError
+// if the fields do not fit together.
+void readFields(const std::string& path, std::uint64_t size, std::size_t windowBytes, Checkpoint& c,
+                std::uint64_t& previousLength, const VectorSink& sink) {
+  std::ifstream in(path, std::ios::binary);
+  constexpr std::size_t header = sizeof kMagicStem + 1;
+  const std::uint64_t body = size - sizeof(Checksum);
+  in.seekg(std::streamoff(header));
+  const std::string refused = path + " is not a cgcm checkpoint of format " + kVersion +
+                              " (its fields do not fit together)";
+  if (!parseHeader(in, body, c)) throw InputError(refused);
+  std::vector<Real> window(std::max<std::size_t>(1, windowBytes / sizeof(Real)));
+  for (int v = 0; v < 2; ++v) {
+    std::uint64_t n = 0;
+    get(in, n);
+    const std::uint64_t at = std::uint64_t(in.tellg());
+    if (!in || n > (body - at) / sizeof(Real)) throw InputError(refused);
+    (v == 0 ? c.unknowns : previousLength) = n;
+    if (!sink) {
+      in.seekg(std::streamoff(at + n * sizeof(Real)));
+      continue;
+    }
+    for (std::uint64_t first = 0; first < n;) {
+      const std::size_t count = std::size_t(std::min<std::uint64_t>(window.size(), n - first));
+      in.read(reinterpret_cast<char*>(window.data()), std::streamsize(count * sizeof(Real)));
+      if (!in) throw InputError(refused);
+      sink(v, first, window.data(), count);
+      first += count;
+    }
+  }
   char end[sizeof kEnd];
   in.read(end, sizeof end);
-  return in && std::memcmp(end, kEnd, sizeof kEnd) == 0 && in.peek() == std::char_traits<char>::eof();
+  if (!in || std::memcmp(end, kEnd, sizeof kEnd) != 0 || std::uint64_t(in.tellg()) != body) throw InputError(refused);
 }
 
 }  // namespace
@@ -125,89 +242,122 @@ bool parseFields(std::istream& in, std::uint64_t size, Checkpoint& c) {
 std::string checkpointPath(const std::string& dir) { return dir + "/checkpoint.bin"; }
 
 bool writeCheckpoint(const std::string& dir, const Checkpoint& c) {
-  const std::string path = checkpointPath(dir), temporary = path + ".tmp";
-  std::string bytes(kMagicStem, sizeof kMagicStem);
-  bytes += kVersion;
-  bytes += fields(c);
-  const Checksum crc = crc32(bytes.data(), bytes.size());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    put(out, crc);
-    out.flush();
-    if (!out) return false;
+  ChecksummedFile file(checkpointPath(dir));
+  writeStart(file, c);
+  for (const std::vector<Real>* v : {&c.u, &c.previous}) {
+    file.write(std::uint64_t(v->size()));
+    file.write(v->data(), v->size() * sizeof(Real));
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  return !ec;
+  file.write(kEnd, sizeof kEnd);
+  return file.commit();
 }
 
 Checkpoint readCheckpoint(const std::string& dir) {
   const std::string path = checkpointPath(dir);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MissingCheckpoint("no checkpoint (" + path + ")");
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError("cannot read " + path);
-  const std::string& refused = path;
-  constexpr std::size_t header = sizeof kMagicStem + 1;
-  const bool cgcm = bytes.size() >= header && std::memcmp(bytes.data(), kMagicStem, sizeof kMagicStem) == 0;
-  const char version = cgcm ? bytes[sizeof kMagicStem] : 0;
-  // format 1: no checksum, the end mark last
-  if (version == '1' && bytes.size() >= header + sizeof kEnd &&
-      std::memcmp(bytes.data() + bytes.size() - sizeof kEnd, kEnd, sizeof kEnd) == 0)
-    throw InputError(refused + " is a checkpoint of format 1, written by an older cgcm; this cgcm reads format " +
-                     kVersion + ": run the deck again from the start");
-  if (bytes.size() < header + sizeof(Checksum))
-    throw InputError(refused + " is damaged or not a cgcm checkpoint (" + std::to_string(bytes.size()) +
-                     " bytes: too short for one)");
-  Checksum stored = 0;
-  std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
-  const std::size_t body = bytes.size() - sizeof(Checksum);
-  if (crc32(bytes.data(), body) != stored)
-    throw InputError(refused + " is damaged: its checksum (CRC-32) does not match its contents (the file was cut "
-                     "or changed after cgcm wrote it, or it is not a cgcm checkpoint)");
-  if (!cgcm) throw InputError(refused + " is not a cgcm checkpoint");
-  // a later format that keeps the checksum at the end
-  if (version != kVersion)
-    throw InputError(refused + " is a checkpoint of format " + version + ", written by a newer cgcm; this cgcm reads "
-                     "format " + kVersion);
+  const std::uint64_t size = checkedFile(path, kRootStreamWindowBytes);
   Checkpoint c;
-  std::istringstream fieldsIn(bytes.substr(header, body - header), std::ios::binary);
-  if (!parseFields(fieldsIn, body, c))
-    throw InputError(refused + " is not a cgcm checkpoint of format " + kVersion + " (its fields do not fit together)");
+  std::uint64_t previous = 0;
+  readFields(path, size, kRootStreamWindowBytes, c, previous,
+             [&](int v, std::uint64_t, const Real* values, std::size_t count) {
+               std::vector<Real>& to = v == 0 ? c.u : c.previous;
+               to.insert(to.end(), values, values + count);
+             });
   return c;
 }
 
-RootGather::RootGather(const Teuchos::RCP<const assembly::Map>& owned) {
-  const bool root = owned->getComm()->getRank() == 0;
-  std::vector<GlobalIndex> gids;  // dof = node * dim + i: the gids are 0 .. n - 1
-  if (root)
-    for (GlobalIndex g = 0; g < GlobalIndex(owned->getGlobalNumElements()); ++g) gids.push_back(g);
-  const auto rootMap =
-      Teuchos::rcp(new assembly::Map(owned->getGlobalNumElements(), gids.data(), gids.size(), 0, owned->getComm()));
-  import_ = Teuchos::rcp(new assembly::Import(owned, rootMap));
-  all_ = Teuchos::rcp(new assembly::Vector(rootMap));
-}
-
-std::vector<Real> RootGather::gather(const assembly::Vector& x) {
-  all_->doImport(x, *import_, Tpetra::INSERT);
-  const auto v = all_->getLocalViewHost(Tpetra::Access::ReadOnly);
-  std::vector<Real> out(v.extent(0));
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = v(k, 0);
-  return out;
-}
-
-void RootGather::scatter(const std::vector<Real>& values, assembly::Vector& x) {
-  // every rank reads the same checkpoint, so every rank refuses it here, before the collective export
-  const std::size_t unknowns = all_->getMap()->getGlobalNumElements();
-  if (values.size() != unknowns)
-    throw InputError("restart: the checkpoint holds " + std::to_string(values.size()) + " unknowns, the problem " +
-                     std::to_string(unknowns));
-  {
-    const auto v = all_->getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (std::size_t k = 0; k < v.extent(0); ++k) v(k, 0) = values[k];
+bool writeCheckpoint(const assembly::Comm& comm, const std::string& dir, const Checkpoint& c, const assembly::Vector& u,
+                     const assembly::Vector* previous, std::size_t windowBytes) {
+  const bool root = comm.getRank() == 0;
+  std::unique_ptr<ChecksummedFile> file;
+  if (root) {
+    file = std::make_unique<ChecksummedFile>(checkpointPath(dir));
+    writeStart(*file, c);
   }
-  x.doExport(*all_, *import_, Tpetra::INSERT);
+  for (const assembly::Vector* v : {&u, previous}) {
+    if (root) file->write(std::uint64_t(v ? v->getGlobalLength() : 0));
+    if (!v) continue;
+    // this rank's entries by global dof, ascending
+    const auto& map = *v->getMap();
+    std::vector<std::pair<GlobalIndex, LocalIndex>> order;
+    for (std::size_t k = 0; k < map.getNodeNumElements(); ++k)
+      order.emplace_back(map.getGlobalElement(LocalIndex(k)), LocalIndex(k));
+    std::sort(order.begin(), order.end());
+    std::vector<GlobalIndex> ids;
+    std::vector<Real> values;
+    {
+      const auto h = v->getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (const auto& [id, k] : order) ids.push_back(id), values.push_back(h(std::size_t(k), 0));
+    }
+    std::uint64_t next = 0;  // the entries written: the windows follow each other without a gap
+    streamToRoot<Real>(
+        comm, ids, values, 1,
+        [&](const std::vector<GlobalIndex>& at, const std::vector<Real>& w) {
+          if (at.front() != GlobalIndex(next) || at.back() != GlobalIndex(next + at.size() - 1))
+            throw std::logic_error("writeCheckpoint: dof " + std::to_string(next) + " sent by no rank");
+          file->write(w.data(), w.size() * sizeof(Real));
+          next += at.size();
+        },
+        windowBytes);
+  }
+  int written = 0;
+  if (root) {
+    file->write(kEnd, sizeof kEnd);
+    written = file->commit() ? 1 : 0;
+  }
+  Teuchos::broadcast(comm, 0, Teuchos::outArg(written));
+  return written != 0;
+}
+
+Checkpoint readCheckpointHeader(const std::string& dir, std::size_t windowBytes) {
+  const std::string path = checkpointPath(dir);
+  const std::uint64_t size = checkedFile(path, windowBytes);
+  Checkpoint c;
+  std::uint64_t previous = 0;
+  readFields(path, size, windowBytes, c, previous, nullptr);
+  return c;
+}
+
+void readCheckpointVectors(const std::string& dir, assembly::Vector& u, assembly::Vector* previous,
+                           std::size_t windowBytes) {
+  const std::string path = checkpointPath(dir);
+  const std::uint64_t size = checkedFile(path, windowBytes);
+  // per vector, this rank's entries (global dof, local index) ascending, and where the windows have got to
+  std::vector<std::pair<GlobalIndex, LocalIndex>> order[2];
+  std::size_t cursor[2] = {0, 0};
+  assembly::Vector* to[2] = {&u, previous};
+  for (int v = 0; v < 2; ++v) {
+    if (!to[v]) continue;
+    const auto& map = *to[v]->getMap();
+    for (std::size_t k = 0; k < map.getNodeNumElements(); ++k)
+      order[v].emplace_back(map.getGlobalElement(LocalIndex(k)), LocalIndex(k));
+    std::sort(order[v].begin(), order[v].end());
+  }
+  auto lengthCheck = [&](int v, std::uint64_t n) {
+    const std::uint64_t want = to[v] ? to[v]->getGlobalLength() : 0;
+    if (to[v] && n != want)
+      throw InputError("restart: the checkpoint holds " + std::to_string(n) + " unknowns" +
+                       (v == 0 ? "" : " in its previous state") + ", the problem " + std::to_string(want));
+  };
+  Checkpoint c;
+  std::uint64_t previousLength = 0;
+  {
+    // the lengths first, before any value lands in a vector
+    readFields(path, size, windowBytes, c, previousLength, nullptr);
+    lengthCheck(0, c.unknowns);
+    if (previous) lengthCheck(1, previousLength);
+  }
+  auto h0 = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  decltype(h0) h1;
+  if (previous) h1 = previous->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  readFields(path, size, windowBytes, c, previousLength,
+             [&](int v, std::uint64_t first, const Real* values, std::size_t count) {
+               if (!to[v]) return;
+               auto& h = v == 0 ? h0 : h1;
+               auto& at = cursor[v];
+               const auto end = GlobalIndex(first + count);
+               for (; at < order[v].size() && order[v][at].first < end; ++at)
+                 h(std::size_t(order[v][at].second), 0) = values[std::size_t(order[v][at].first - GlobalIndex(first))];
+             });
 }
 
 }  // namespace cgcm::solver

@@ -9,6 +9,12 @@
 // never a torn file. The file ends with a CRC-32 of all its bytes before it
 // (format 2, magic "cgcmckp2"): a file cut or changed after the write is
 // refused on reading.
+//
+// In a distributed run no rank holds a whole vector: the ranks send rank 0
+// their entries a window at a time as it writes (solver::streamToRoot), and on
+// a restart every rank reads the file a window at a time, keeping its own
+// entries. The file is the same whoever writes it.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,6 +22,7 @@
 #include "cgcm/core/Error.hpp"
 #include "cgcm/solver/LoadPoint.hpp"
 #include "cgcm/solver/LoadStepper.hpp"
+#include "cgcm/solver/RootStream.hpp"
 
 namespace cgcm::solver {
 
@@ -24,13 +31,16 @@ struct Checkpoint {
   Real lastDisplacement = 0.0;  ///< the continuity check's reference u
   int exodusSteps = 0;  ///< steps in results.e (0 without Exodus output)
   std::vector<LoadPoint> curve;
-  std::vector<Real> u, previous;  ///< by global dof (previous: empty unless stepper.havePrevious)
+  /// By global dof (previous: empty unless stepper.havePrevious): what the one-process forms below write
+  /// and read; the distributed ones leave them empty and read and write the ranks' vectors.
+  std::vector<Real> u, previous;
+  std::uint64_t unknowns = 0;  ///< the length of u in the file (readCheckpoint, readCheckpointHeader)
 };
 
 /// The file in `dir`.
 std::string checkpointPath(const std::string& dir);
 
-/// Writes atomically (rank 0 only). False if the disk refused (the previous
+/// Writes `c` with its vectors atomically (one process). False if the disk refused (the previous
 /// checkpoint, if any, is left as it was).
 bool writeCheckpoint(const std::string& dir, const Checkpoint& c);
 
@@ -39,27 +49,26 @@ struct MissingCheckpoint : InputError {
   using InputError::InputError;
 };
 
-/// Reads the checkpoint of `dir` (every rank reads the file). Throws
+/// Reads the checkpoint of `dir` with its vectors (one process). Throws
 /// MissingCheckpoint if there is none, InputError naming the file if it is
 /// damaged (its checksum does not match: truncated or changed), of another
 /// format version, or not a checkpoint.
 Checkpoint readCheckpoint(const std::string& dir);
 
-/// A distributed vector gathered on rank 0 in global dof order, and back.
-class RootGather {
- public:
-  explicit RootGather(const Teuchos::RCP<const assembly::Map>& owned);
-  /// All values on rank 0, empty elsewhere. Collective.
-  std::vector<Real> gather(const assembly::Vector& x);
-  /// x from `values`, every dof in global order, given on every rank (rank 0's are used; a
-  /// wrong length throws InputError on every rank). Collective.
-  void scatter(const std::vector<Real>& values, assembly::Vector& x);
-  /// The gathered vector of the last gather (rank 0: every dof).
-  const assembly::Vector& all() const { return *all_; }
+/// The distributed form of writeCheckpoint: `c`'s header and curve (rank 0's), u and, if not null,
+/// previous streamed from the ranks to rank 0 (streamToRoot, `windowBytes` at a time), which writes the
+/// same file. Returns on every rank whether rank 0 wrote it. Collective.
+bool writeCheckpoint(const assembly::Comm& comm, const std::string& dir, const Checkpoint& c, const assembly::Vector& u,
+                     const assembly::Vector* previous, std::size_t windowBytes = kRootStreamWindowBytes);
 
- private:
-  Teuchos::RCP<const assembly::Import> import_;
-  Teuchos::RCP<assembly::Vector> all_;
-};
+/// The checkpoint of `dir` without its vectors' values (c.unknowns: u's length): the file checked
+/// whole and read a window at a time. Throws as readCheckpoint.
+Checkpoint readCheckpointHeader(const std::string& dir, std::size_t windowBytes = kRootStreamWindowBytes);
+
+/// The vectors of `dir`'s checkpoint into this rank's entries of u and, if not null, previous: every rank
+/// reads the file (checked whole first) a window at a time. Throws as readCheckpoint, and InputError if
+/// a vector's length in the file is not the vector's (nothing is written to the vectors then).
+void readCheckpointVectors(const std::string& dir, assembly::Vector& u, assembly::Vector* previous,
+                           std::size_t windowBytes = kRootStreamWindowBytes);
 
 }  // namespace cgcm::solver
