@@ -5,10 +5,12 @@ checks that the killed run's summary says "running", continues it with
 `cgcm --restart DIR`, and compares the continued run's load_curve.csv,
 body_forces.csv (compare_csv.py) and results.e (exo_compare) with the
 reference's. Exit 0 if all agree. With --launcher (e.g. "mpirun -np 2") every
-run goes through it, and the kill takes the launcher's whole process group.
+run goes through it, and the kill takes the launcher's whole process group;
+--restart-launcher continues the run through another one ("" for none: one
+process), as a restart on another number of ranks.
 
-usage: kill_and_restart.py --cgcm CGCM --exo-compare EXO --output DIR [--at 0.5] [--rel 1e-8]
-                           [--launcher "MPIRUN ARGS"] -- DECK [overrides...]
+usage: kill_and_restart.py --cgcm CGCM --exo-compare EXO --output DIR [--at 0.5] [--rel 1e-8] [--abs 1e-12]
+                           [--launcher "MPIRUN ARGS"] [--restart-launcher "MPIRUN ARGS"] -- DECK [overrides...]
 """
 import argparse
 import os
@@ -37,8 +39,10 @@ def main():
     ap.add_argument("--output", required=True)
     ap.add_argument("--at", type=float, default=0.5, help="share of the reference's rows at the kill")
     ap.add_argument("--rel", type=float, default=1e-8)
+    ap.add_argument("--abs", type=float, default=1e-12, help="absolute tolerance of the results.e comparison")
     ap.add_argument("--timeout", type=float, default=300.0)
     ap.add_argument("--launcher", default="", help="command line that starts cgcm (MPI), split as a shell would")
+    ap.add_argument("--restart-launcher", default=None, help="the same for the restart (default: --launcher)")
     ap.add_argument("args", nargs="+", help="deck and overrides")
     a = ap.parse_args()
     reference, killed = os.path.join(a.output, "reference"), os.path.join(a.output, "killed")
@@ -70,7 +74,8 @@ def main():
     if not status.startswith("running"):
         sys.exit(f"kill_and_restart: the killed run's summary says \"{status}\", not \"running\"")
 
-    r = subprocess.run(cgcm + ["--restart", killed, "Output/Print Steps=false"], timeout=a.timeout, **quiet)
+    restart = shlex.split(a.launcher if a.restart_launcher is None else a.restart_launcher) + [a.cgcm]
+    r = subprocess.run(restart + ["--restart", killed, "Output/Print Steps=false"], timeout=a.timeout, **quiet)
     if r.returncode != 0:
         sys.exit(f"kill_and_restart: cgcm --restart failed (exit {r.returncode})")
     with open(os.path.join(killed, "summary.txt")) as f:
@@ -86,7 +91,7 @@ def main():
         failed |= r.returncode != 0
     # the state's Newton residual norm is round-off below the acceptance tolerance (1e-10 here); like
     # the CSV's residual column it need not repeat digit for digit (MUMPS: up to 2.6e-12 apart)
-    r = subprocess.run([a.exo_compare, "--rel", str(a.rel), "--abs-for", "residual=1e-10",
+    r = subprocess.run([a.exo_compare, "--rel", str(a.rel), "--abs", str(a.abs), "--abs-for", "residual=1e-10",
                         os.path.join(reference, "results.e"), os.path.join(killed, "results.e")])
     failed |= r.returncode != 0
     return 1 if failed else 0

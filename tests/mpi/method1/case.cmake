@@ -4,5 +4,5 @@
 # counts): np = 1 and np = 2 give the same curve on the approach (1e-7) and
 # the same results.e, the interaction force on each node and the traction of
 # the surface nodes included (each rank's pairs exported to the rows' owners,
-# gathered on rank 0).
+# streamed to rank 0).
 cgcm_ranks_agree()

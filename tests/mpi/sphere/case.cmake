@@ -7,7 +7,7 @@ cgcm_run(AS np2 RANKS 2 PRINT_STEPS)
 cgcm_check(AS np1_vs_np2 FIXTURES ${name}_np1 ${name}_np2
            COMMAND ${compare_csv} ${run}_np1/load_curve.csv ${run}_np2/load_curve.csv --columns u,P,gap,P_lower
                    --rel 1e-7 --abs 1e-12)
-# ... and the same results.e: rank 0 gathers the state and writes one file
+# ... and the same results.e: the ranks stream their parts to rank 0, which writes one file
 # (the residuals, round-off, differ below the tolerance's absolute part).
 cgcm_check(AS results_np1_vs_np2 FIXTURES ${name}_np1 ${name}_np2
            COMMAND exo_compare --rel 1e-7 --abs 1e-10 ${run}_np1/results.e ${run}_np2/results.e)
