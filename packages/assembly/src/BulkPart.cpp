@@ -1,6 +1,7 @@
 #include "cgcm/assembly/BulkPart.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,7 @@ namespace {
 
 using DofView = Kokkos::View<LocalIndex**, Kokkos::LayoutRight>;
 using CoordView = Kokkos::View<Real***, Kokkos::LayoutRight>;
+using OffsetView = Kokkos::View<std::uint16_t**, Kokkos::LayoutRight>;
 
 struct BlockFailures {
   int count = 0;
@@ -36,14 +38,15 @@ KOKKOS_INLINE_FUNCTION void gatherCell(const LocalIndex c, const DofView& dofLid
 // Evaluates one block with a fixed (formulation, element) kernel; returns the
 // number of cells that turned inside out and the first of them.
 template <class Kernel>
-BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, const CoordView& Xref,
-                  const BulkPart::ConstVectorView& u, const BulkPart::VectorView& f,
+BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, const OffsetView& offsets,
+                  const CoordView& Xref, const BulkPart::ConstVectorView& u, const BulkPart::VectorView& f,
                   const BulkPart::LocalMatrix* J, bool sortedRows, const material::NeoHookean& mat) {
   constexpr int nn = Kernel::numNodes, dim = Kernel::dim, nd = Kernel::numDofs;
   const LocalIndex numCells = LocalIndex(dofLids.extent(0));
   int failures = 0;
   const bool withTangent = J != nullptr;
   BulkPart::LocalMatrix K = withTangent ? *J : BulkPart::LocalMatrix();
+  const bool byOffsets = withTangent && offsets.extent(0) == std::size_t(numCells) && numCells > 0;
   Kokkos::parallel_reduce(
       "cgcm::assembleBlock", Kokkos::RangePolicy<ExecSpace>(0, numCells),
       [=](const LocalIndex c, int& failed) {
@@ -54,7 +57,16 @@ BlockFailures assembleBlock(const DofView& dofLids, const DofView& colLids, cons
         if (withTangent) {
           Real ke[nd][nd];
           ok = Kernel::residualAndTangent(X, x, ue, mat, fe, ke);
-          if (ok) {
+          if (ok && byOffsets) {  // row r of node a: node b's columns start at offsets(c, a nn + b) in it
+            for (int r = 0; r < nd; ++r) {
+              const auto start = K.graph.row_map(dofLids(c, r));
+              const int a = r / dim;
+              for (int b = 0; b < nn; ++b) {
+                const auto at = start + offsets(c, a * nn + b);
+                for (int j = 0; j < dim; ++j) Kokkos::atomic_add(&K.values(at + j), ke[r][b * dim + j]);
+              }
+            }
+          } else if (ok) {
             LocalIndex cols[nd];
             for (int k = 0; k < nd; ++k) cols[k] = colLids(c, k);
             for (int r = 0; r < nd; ++r) K.sumIntoValues(dofLids(c, r), cols, nd, ke[r], sortedRows, true);
@@ -132,13 +144,56 @@ void BulkPart::appendCellNeighbours(std::vector<std::vector<LocalIndex>>& neighb
       }
 }
 
-void BulkPart::setColumnMap(const Map& columns) {
+void BulkPart::setMatrixGraph(const Map& columns, const LocalMatrix& J, bool sortedRows) {
+  const auto rowMap = J.graph.row_map;
+  const auto entries = J.graph.entries;
   for (auto& b : blocks_) {
-    b.colLids = DofView("colLids", b.dofLids.extent(0), b.dofLids.extent(1));
-    for (std::size_t c = 0; c < b.dofLids.extent(0); ++c)
-      for (std::size_t k = 0; k < b.dofLids.extent(1); ++k)
+    const std::size_t numCells = b.dofLids.extent(0), nd = b.dofLids.extent(1);
+    const int nn = b.numNodes;
+    b.colLids = DofView("colLids", numCells, nd);
+    for (std::size_t c = 0; c < numCells; ++c)
+      for (std::size_t k = 0; k < nd; ++k)
         b.colLids(c, k) = columns.getLocalElement(overlap_->getGlobalElement(b.dofLids(c, k)));
+    // where node b's columns start in the rows of node a's dofs: the same offset in each of them, and
+    // b's dofs side by side from there (the graph is built node by node, so they are)
+    b.offsets = OffsetView("offsets", numCells, std::size_t(nn) * nn);
+    bool found = true;
+    for (std::size_t c = 0; c < numCells && found; ++c)
+      for (int a = 0; a < nn && found; ++a) {
+        const auto first = rowMap(b.dofLids(c, a * dim_)), end = rowMap(b.dofLids(c, a * dim_) + 1);
+        for (int k = 0; k < nn && found; ++k) {
+          const LocalIndex col = b.colLids(c, k * dim_);
+          auto at = first;
+          if (sortedRows) {
+            auto hi = end;  // the first entry >= col, by bisection
+            while (at < hi) {
+              const auto mid = at + (hi - at) / 2;
+              if (entries(mid) < col) at = mid + 1;
+              else hi = mid;
+            }
+            if (at < end && entries(at) != col) at = end;
+          } else {
+            while (at < end && entries(at) != col) ++at;
+          }
+          const auto offset = at - first;
+          found = at < end && offset <= 65535;
+          for (int i = 0; i < dim_ && found; ++i) {
+            const auto row = b.dofLids(c, a * dim_ + i);
+            const auto start = rowMap(row);
+            for (int j = 0; j < dim_ && found; ++j)
+              found = start + offset + j < rowMap(row + 1) && entries(start + offset + j) == b.colLids(c, k * dim_ + j);
+          }
+          if (found) b.offsets(c, std::size_t(a) * nn + k) = std::uint16_t(offset);
+        }
+      }
+    if (!found) b.offsets = OffsetView();
   }
+}
+
+int BulkPart::numBlocksWithOffsets() const {
+  int n = 0;
+  for (const auto& b : blocks_) n += b.dofLids.extent(0) > 0 && b.offsets.extent(0) == b.dofLids.extent(0) ? 1 : 0;
+  return n;
 }
 
 BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const VectorView& f, const LocalMatrix* J,
@@ -147,7 +202,8 @@ BulkPart::CellFailures BulkPart::assemble(const ConstVectorView& u, const Vector
   for (const auto& b : blocks_) {
     BlockFailures bf;
     const bool assembled = fem::withSolidKernel(formulation_, b.type, [&](auto kernel) {
-      bf = assembleBlock<decltype(kernel)>(b.dofLids, b.colLids, b.X, u, f, J, sortedRows, material_);
+      bf = assembleBlock<decltype(kernel)>(b.dofLids, b.colLids, useOffsets_ ? b.offsets : OffsetView(), b.X, u, f, J,
+                                           sortedRows, material_);
     });
     if (!assembled) throw std::logic_error("BulkPart: no kernel for block \"" + b.name + "\" (checked at construction)");
     if (bf.count > 0 && out.first.empty()) {

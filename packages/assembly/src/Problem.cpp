@@ -144,8 +144,10 @@ void Problem::evaluate(const Vector& u, Vector& f, Matrix* J) {
     Tpetra::beginAssembly(*J);
     J->setAllToScalar(0.0);
     if (columnsVersion_ != graphVersion_) {
-      // column ids of the owned+shared matrix; valid while J is in assembly mode
-      for (auto& part : bulk_) part.setColumnMap(*J->getColMap());
+      // column ids and row offsets of the owned+shared matrix; valid while J is in assembly mode
+      const auto local = J->getLocalMatrixDevice();
+      const bool sorted = J->getCrsGraph()->isSorted();
+      for (auto& part : bulk_) part.setMatrixGraph(*J->getColMap(), local, sorted);
       columnsVersion_ = graphVersion_;
     }
   }

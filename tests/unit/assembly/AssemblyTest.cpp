@@ -15,6 +15,7 @@
 #include <memory>
 #include <numeric>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "cgcm/assembly/GhostedSurfaces.hpp"
@@ -232,6 +233,81 @@ TEST(BulkPart, TangentAndOneMaterialPerBody) {
   const Real err = tangentError(mixed, u, 1e-6);
   std::printf("[bulk part] tet4 + hex8 bodies, two materials: max|J - J_fd|/max|J| = %.2e\n", err);
   EXPECT_LT(err, 1e-6);
+}
+
+std::shared_ptr<interaction::SurfaceInteraction> methodThree(const mesh::Mesh& m);
+
+// The Jacobian's local entries as (row, column, value), in the order the matrix holds them.
+std::vector<std::tuple<LocalIndex, LocalIndex, Real>> localEntries(const Matrix& J) {
+  std::vector<std::tuple<LocalIndex, LocalIndex, Real>> out;
+  for (std::size_t r = 0; r < J.getNodeNumRows(); ++r) {
+    Matrix::nonconst_local_inds_host_view_type cols("cols", J.getNumEntriesInLocalRow(LocalIndex(r)));
+    Matrix::nonconst_values_host_view_type vals("vals", cols.extent(0));
+    std::size_t count = 0;
+    J.getLocalRowCopy(LocalIndex(r), cols, vals, count);
+    for (std::size_t k = 0; k < count; ++k) out.emplace_back(LocalIndex(r), cols(k), vals(k));
+  }
+  return out;
+}
+
+// The bulk scatter adds each tangent entry at its cached offset in the row; the Jacobian is, bit for bit,
+// the one whose entries are found by bisection: linear and quadratic cells in 3D and 2D, with an
+// interaction's couplings in the graph (1 and 2 ranks; the offsets found for every block).
+TEST(BulkPart, ScatterAtCachedOffsetsIsTheScatterByBisection) {
+  auto comm = Tpetra::getDefaultComm();
+  struct Case {
+    const char* name;
+    std::shared_ptr<mesh::Mesh> mesh;
+    Formulation formulation;
+    bool interaction;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"tet4 + hex8, Method 3", twoBoxes(0.3), Formulation::ThreeD, true});
+  {
+    mesh::BoxSpec h, s, t;
+    h.nx = h.ny = 3, h.nz = 2, h.name = "hex27", h.element = {2, false};
+    s.x0 = 3.0, s.name = "hex20", s.element = {2, true};
+    t.x0 = 5.0, t.tetrahedra = true, t.name = "tet10", t.element = {2, false};
+    auto m = std::make_shared<mesh::Mesh>(mesh::box(h));
+    mesh::append(*m, mesh::box(s), "hex20 ");
+    mesh::append(*m, mesh::box(t), "tet10 ");
+    cases.push_back({"hex27, hex20, tet10", m, Formulation::ThreeD, false});
+  }
+  {
+    mesh::RectangleSpec a, b;
+    a.nx = 6, a.ny = 4, a.name = "quad4";
+    b.nx = 4, b.ny = 3, b.y0 = 1.5, b.name = "quad9", b.element = {2, false};
+    auto m = std::make_shared<mesh::Mesh>(mesh::rectangle(a));
+    mesh::append(*m, mesh::rectangle(b), "quad9 ");
+    cases.push_back({"quad4 + quad9, axisymmetric", m, Formulation::Axisymmetric, false});
+  }
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const int dim = formulationDim(c.formulation);
+    auto dofs = Teuchos::rcp(new DofMap(comm, *c.mesh, dim));
+    Problem p(dofs, c.mesh, c.formulation, material::NeoHookean::fromYoungPoisson(1.0, 0.3));
+    if (c.interaction) p.setInteraction(methodThree(*c.mesh), 1.5);
+    Vector u(dofs->ownedMap()), f(dofs->ownedMap());
+    {
+      const auto all = randomDisplacement(std::size_t(dim) * std::size_t(c.mesh->numNodes()), 0.02, 11);
+      auto h = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      const auto& map = *dofs->ownedMap();
+      for (std::size_t k = 0; k < map.getNodeNumElements(); ++k) h(k, 0) = all[std::size_t(map.getGlobalElement(LocalIndex(k)))];
+    }
+    if (c.interaction) EXPECT_TRUE(p.updateInteractionGraph(u));  // the couplings at u
+    auto J = p.createMatrix();
+    p.evaluate(u, f, J.get());
+    const auto atOffsets = localEntries(*J);
+    for (const auto& part : p.bulkParts())
+      if (part.numLocalCells() > 0) EXPECT_GE(part.numBlocksWithOffsets(), 1);  // (a rank may hold no cell of a body)
+    p.useScatterOffsets(false);
+    p.evaluate(u, f, J.get());
+    const auto byBisection = localEntries(*J);
+    ASSERT_EQ(atOffsets.size(), byBisection.size());
+    std::size_t differing = 0;
+    for (std::size_t k = 0; k < atOffsets.size(); ++k) differing += atOffsets[k] != byBisection[k] ? 1 : 0;
+    EXPECT_EQ(differing, 0u) << "of " << atOffsets.size() << " entries";
+  }
 }
 
 // The interaction part's share of f (full - bulk), summed per body, is minus

@@ -55,6 +55,11 @@ class Problem {
   /// The material of a body.
   const material::NeoHookean& material(int body) const { return bulk_.at(body).material(); }
   const std::vector<BulkPart>& bulkParts() const { return bulk_; }
+  /// Whether the bulk scatter adds at the cached row offsets (true, the default) or finds each entry by
+  /// bisection (false): BulkPart::useScatterOffsets, for a test that compares the two.
+  void useScatterOffsets(bool use) {
+    for (auto& b : bulk_) b.useScatterOffsets(use);
+  }
   /// Per owned row, 1/s² with s = max(1, Y_body / referenceModulus): the weights of the convergence
   /// test's 2-norm, which then measures the residual of each body stiffer than the reference in that
   /// body's own force unit (its round-off floor grows with its modulus). Null when no body is stiffer.
