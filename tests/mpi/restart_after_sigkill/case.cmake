@@ -15,3 +15,9 @@ cgcm_test(AS np2_restart_np1 SERIAL
                   --exo-compare $<TARGET_FILE:exo_compare> --output ${run}_np2_restart_np1 --at 0.5
                   --rel 1e-7 --abs 1e-10 --launcher ${two_ranks} --restart-launcher=
                   -- ${case_dir}/deck.xml ${quiet})
+# And a one-rank run continued on two: each rank reads its own entries of the one-rank checkpoint.
+cgcm_test(AS np1_restart_np2 SERIAL
+          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/tools/kill_and_restart.py --cgcm $<TARGET_FILE:cgcm>
+                  --exo-compare $<TARGET_FILE:exo_compare> --output ${run}_np1_restart_np2 --at 0.5
+                  --rel 1e-7 --abs 1e-10 --launcher= --restart-launcher ${two_ranks}
+                  -- ${case_dir}/deck.xml ${quiet})
