@@ -163,20 +163,10 @@ void BulkPart::setMatrixGraph(const Map& columns, const LocalMatrix& J, bool sor
         const auto first = rowMap(b.dofLids(c, a * dim_)), end = rowMap(b.dofLids(c, a * dim_) + 1);
         for (int k = 0; k < nn && found; ++k) {
           const LocalIndex col = b.colLids(c, k * dim_);
-          auto at = first;
-          if (sortedRows) {
-            auto hi = end;  // the first entry >= col, by bisection
-            while (at < hi) {
-              const auto mid = at + (hi - at) / 2;
-              if (entries(mid) < col) at = mid + 1;
-              else hi = mid;
-            }
-            if (at < end && entries(at) != col) at = end;
-          } else {
-            while (at < end && entries(at) != col) ++at;
-          }
-          const auto offset = at - first;
-          found = at < end && offset <= 65535;
+          const LocalIndex *row = entries.data() + first, *rowEnd = entries.data() + end;
+          const LocalIndex* at = sortedRows ? std::lower_bound(row, rowEnd, col) : std::find(row, rowEnd, col);
+          const auto offset = std::size_t(at - row);
+          found = at != rowEnd && *at == col && offset <= 65535;
           for (int i = 0; i < dim_ && found; ++i) {
             const auto row = b.dofLids(c, a * dim_ + i);
             const auto start = rowMap(row);

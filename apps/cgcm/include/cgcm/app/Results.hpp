@@ -30,7 +30,6 @@
 #include <string>
 #include <vector>
 
-#include "cgcm/app/Setup.hpp"
 #include "cgcm/io/ExodusWriter.hpp"
 #include "cgcm/solver/Discretization.hpp"
 #include "cgcm/solver/RootStream.hpp"
